@@ -1,0 +1,162 @@
+/**
+ * @class   vtkBlueNoiseSpectrum
+ * @brief   3D blue-noise spectrum metric of point sets or count volumes.
+ *
+ * vtkBlueNoiseSpectrum measures how "blue" a 3D point distribution is, with
+ * the metric of Zhang et al. (section 4, Eq. 2-11): radially averaged power
+ * spectrum, anisotropy, low-frequency ratio L(g), segmented radially averaged
+ * power spectra (SRAPS) and their symmetry S(g), and the target
+ * T(g) = w L(g) + (1 - w) S(g). The computation is vtkBlueNoiseSpectrumKernel's;
+ * its class comment gives every definition exactly (shell rounding, Hermitian
+ * counting, tie rules, zero-variance and zero-power conventions).
+ *
+ * Input (port 0, repeatable): every connection is a vtkPointSet (e.g. the
+ * vtkPolyData of vtkErrorDiffusionSampler), a vtkImageData, or a composite
+ * dataset of those; each non-empty leaf is one realisation. Realisations are
+ * averaged (mean of their periodograms) and must all give the same grid shape.
+ *
+ * The analysis grid of a realisation, when UseInputGrid is on (default):
+ * 1. a point set carrying the sampler's field data `SamplingGridOrigin` (3),
+ *    `SamplingGridSpacing` (3), `SamplingGridExtent` (6: i0 i1 j0 j1 k0 k1)
+ *    and optionally `SamplingGridDirection` (9, row major, index to physical:
+ *    x = origin + D (ijk * spacing)) uses that grid;
+ * 2. an image uses its own extent and geometry: the signal is the array chosen
+ *    with SetInputArrayToProcess(0, ...) (default: active point scalars; a
+ *    cell-data array uses the cell grid), one component, read as counts (the
+ *    sampler's uint8 mask counts one point per set voxel);
+ * 3. otherwise GridDimensions points (default 64^3) spread evenly over the
+ *    union of the bounds of all such realisations, or over GridBounds when
+ *    UseGridBounds is on; the first and last grid points lie on the bounds.
+ * With UseInputGrid off, rule 3 applies to every realisation (an image then
+ * contributes its point or cell centres weighted by the array values).
+ * Points go to the nearest grid point (voxel centre); points outside the grid
+ * are dropped with a warning giving their number.
+ *
+ * Output port 0, vtkTable, one row per radial shell 1 .. nmax: `Frequency`
+ * (cycles per voxel), `RadialPower`, `Anisotropy`, `AnisotropyDB` (floored at
+ * -300 dB), `SRAPS_XY`, `SRAPS_XZ`, `SRAPS_YZ` (vtkDoubleArray) and
+ * `ShellCount` (vtkIdTypeArray, full-spectrum sample count). Field data:
+ * one-tuple vtkDoubleArrays `NumberOfPoints` (mean over realisations),
+ * `Density`, `PrincipalFrequency`, `LowFrequencyRatio`, `SymmetryCorrelation`,
+ * `Symmetry`, `TargetValue`, and vtkIntArrays `Realisations` (1 tuple) and
+ * `GridDimensions` (3 components).
+ *
+ * Output port 1, vtkImageData (when GenerateSpectrumImage is on): the averaged
+ * power spectrum P(f) = |B(f)|^2 / N as the point array `Power` (double), zero
+ * frequency centred: spacing 1/Lx, 1/Ly, 1/Lz, origin -floor(L/2)/L per axis,
+ * so point coordinates are frequencies in cycles per voxel and (0, 0, 0) is the
+ * point of index floor(L/2) on every axis; the DC value is 0.
+ *
+ * Errors (vtkErrorMacro, both outputs empty): no realisation, a realisation
+ * without points or with N = 0 inside the grid, no or a multi-component array,
+ * a grid dimension below 2, realisations of different grid shapes, negative or
+ * non-finite counts, malformed SamplingGrid field data, a singular direction
+ * matrix. A mask with every voxel set (g = 1) has no power off DC: a warning,
+ * and L = 0, anisotropy 0, S = 1 by convention.
+ *
+ * Caveats: the whole spectrum needs every realisation in full, so the filter
+ * asks for the whole extent and piece 0 of 1 of its inputs (each rank of a
+ * parallel run computes the full metric of what it is given). When the grid
+ * comes from field data, the spectrum image's whole extent is known only once
+ * the filter has executed; RequestInformation announces the best guess (the
+ * input image's extent or GridDimensions) and RequestData corrects it.
+ * Memory is about 24 bytes per voxel of the grid, plus 4 bytes per voxel for
+ * binned point inputs and 8 per voxel for the spectrum image.
+ *
+ * @sa vtkBlueNoiseSpectrumKernel vtkErrorDiffusionSampler
+ */
+#ifndef vtkBlueNoiseSpectrum_h
+#define vtkBlueNoiseSpectrum_h
+
+#include "vtkFiltersBlueNoiseModule.h" // for export macro
+#include "vtkTableAlgorithm.h"
+
+class vtkDataSet;
+class vtkImageData;
+
+class VTKFILTERSBLUENOISE_EXPORT vtkBlueNoiseSpectrum : public vtkTableAlgorithm
+{
+public:
+  static vtkBlueNoiseSpectrum* New();
+  vtkTypeMacro(vtkBlueNoiseSpectrum, vtkTableAlgorithm);
+  void PrintSelf(ostream& os, vtkIndent indent) override;
+
+  ///@{
+  /**
+   * Weight w of the low-frequency ratio in T = w L + (1 - w) S, in [0, 1].
+   * Default 0.02.
+   */
+  vtkSetClampMacro(Weight, double, 0.0, 1.0);
+  vtkGetMacro(Weight, double);
+  ///@}
+
+  ///@{
+  /**
+   * Use the grid the input carries (sampler field data, or an image's own
+   * grid) when there is one. Off forces GridDimensions for every
+   * realisation. Default on.
+   */
+  vtkSetMacro(UseInputGrid, bool);
+  vtkGetMacro(UseInputGrid, bool);
+  vtkBooleanMacro(UseInputGrid, bool);
+  ///@}
+
+  ///@{
+  /**
+   * Number of grid points (Lx, Ly, Lz) of the analysis grid built over the
+   * bounds when the input carries no grid (or UseInputGrid is off). Each must
+   * be at least 2. Default 64 64 64.
+   */
+  vtkSetVector3Macro(GridDimensions, int);
+  vtkGetVector3Macro(GridDimensions, int);
+  ///@}
+
+  ///@{
+  /**
+   * Bounds (xmin, xmax, ymin, ymax, zmin, zmax) of that grid, used instead of
+   * the data bounds when UseGridBounds is on. Default off, (0, 1, 0, 1, 0, 1).
+   */
+  vtkSetVector6Macro(GridBounds, double);
+  vtkGetVector6Macro(GridBounds, double);
+  vtkSetMacro(UseGridBounds, bool);
+  vtkGetMacro(UseGridBounds, bool);
+  vtkBooleanMacro(UseGridBounds, bool);
+  ///@}
+
+  ///@{
+  /**
+   * Produce the centred power spectrum image on output port 1. Default on.
+   */
+  vtkSetMacro(GenerateSpectrumImage, bool);
+  vtkGetMacro(GenerateSpectrumImage, bool);
+  vtkBooleanMacro(GenerateSpectrumImage, bool);
+  ///@}
+
+  /// Output port 1: the centred power spectrum.
+  vtkImageData* GetSpectrumImageOutput();
+
+protected:
+  vtkBlueNoiseSpectrum();
+  ~vtkBlueNoiseSpectrum() override;
+
+  int FillInputPortInformation(int port, vtkInformation* info) override;
+  int FillOutputPortInformation(int port, vtkInformation* info) override;
+  int RequestInformation(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
+  int RequestUpdateExtent(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
+  int RequestData(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
+
+  double Weight = 0.02;
+  bool UseInputGrid = true;
+  int GridDimensions[3] = { 64, 64, 64 };
+  double GridBounds[6] = { 0.0, 1.0, 0.0, 1.0, 0.0, 1.0 };
+  bool UseGridBounds = false;
+  bool GenerateSpectrumImage = true;
+
+private:
+  vtkBlueNoiseSpectrum(const vtkBlueNoiseSpectrum&) = delete;
+  void operator=(const vtkBlueNoiseSpectrum&) = delete;
+
+  bool IsAborted();
+};
+
+#endif

@@ -1,0 +1,232 @@
+#include "vtkErrorDiffusionKernel.h"
+
+#include <algorithm>
+
+namespace
+{
+// In-layer directions (dx, dy) of u and v for the four phases of a cycle:
+// each phase is the previous one turned by 90 degrees.
+const int PhaseU[4][2] = { { 1, 0 }, { 0, 1 }, { -1, 0 }, { 0, -1 } };
+const int PhaseV[4][2] = { { 0, 1 }, { -1, 0 }, { 0, -1 }, { 1, 0 } };
+
+int PositiveModulo4(int i)
+{
+  return ((i % 4) + 4) % 4;
+}
+}
+
+//------------------------------------------------------------------------------
+void vtkErrorDiffusionKernel::Generator::Seed(std::uint64_t seed, std::uint64_t stream)
+{
+  // PCG32 initialisation (O'Neill 2014): any seed gives a full-period stream.
+  this->State = 0;
+  this->Increment = (stream << 1u) | 1u;
+  this->Uniform();
+  this->State += seed;
+  this->Uniform();
+}
+
+//------------------------------------------------------------------------------
+inline float vtkErrorDiffusionKernel::Generator::Uniform()
+{
+  const std::uint64_t old = this->State;
+  this->State = old * 6364136223846793005ULL + this->Increment;
+  const auto xorshifted = static_cast<std::uint32_t>(((old >> 18u) ^ old) >> 27u);
+  const auto rot = static_cast<std::uint32_t>(old >> 59u);
+  const std::uint32_t x = (xorshifted >> rot) | (xorshifted << ((32u - rot) & 31u));
+  // 24 random bits: every value is exact in float, and the result is < 1.
+  return static_cast<float>(x >> 8) * (1.0f / 16777216.0f);
+}
+
+//------------------------------------------------------------------------------
+vtkErrorDiffusionKernel::vtkErrorDiffusionKernel()
+  : Table(vtkErrorDiffusionParameterTable::Paper())
+{
+}
+
+//------------------------------------------------------------------------------
+vtkErrorDiffusionKernel::LayerScan vtkErrorDiffusionKernel::GetLayerScan(
+  int nx, int ny, int phase)
+{
+  phase = PositiveModulo4(phase);
+  LayerScan s;
+  s.Phase = phase;
+  const int* u = PhaseU[phase];
+  const int* v = PhaseV[phase];
+  const bool rowsAlongX = u[0] != 0;
+  s.NU = rowsAlongX ? nx : ny;
+  s.NV = rowsAlongX ? ny : nx;
+  s.UStride = rowsAlongX ? u[0] : static_cast<vtkIdType>(u[1]) * nx;
+  s.VStride = rowsAlongX ? static_cast<vtkIdType>(v[1]) * nx : v[0];
+  // The first voxel is the corner from which both u and v point inwards.
+  const int x0 = (u[0] < 0 || v[0] < 0) ? nx - 1 : 0;
+  const int y0 = (u[1] < 0 || v[1] < 0) ? ny - 1 : 0;
+  s.Start = x0 + static_cast<vtkIdType>(nx) * y0;
+  return s;
+}
+
+//------------------------------------------------------------------------------
+void vtkErrorDiffusionKernel::GetTargetOffsets(const LayerScan& scan, int row, int offsets[6][3])
+{
+  const int sign = (row % 2 == 0) ? 1 : -1;
+  const int du[2] = { sign * PhaseU[scan.Phase][0], sign * PhaseU[scan.Phase][1] };
+  const int* dv = PhaseV[scan.Phase];
+  const int table[6][3] = {
+    { du[0], du[1], 0 },                 // A100
+    { -du[0] + dv[0], -du[1] + dv[1], 0 },
+    { dv[0], dv[1], 0 },                 // A010
+    { -dv[0], -dv[1], 1 },               // A0-11
+    { -du[0], -du[1], 1 },
+    { 0, 0, 1 },                         // A001
+  };
+  std::copy(&table[0][0], &table[0][0] + 18, &offsets[0][0]);
+}
+
+//------------------------------------------------------------------------------
+void vtkErrorDiffusionKernel::Begin(int nx, int ny, int nz, int firstLayer)
+{
+  this->NX = std::max(nx, 0);
+  this->NY = std::max(ny, 0);
+  this->NZ = std::max(nz, 0);
+  this->FirstLayer = firstLayer;
+  this->LayersDone = 0;
+  const size_t layer = static_cast<size_t>(this->NX) * static_cast<size_t>(this->NY);
+  this->Current.assign(layer, 0.0f);
+  this->Next.assign(layer, 0.0f);
+  this->Random.Seed(this->Seed, 0x9e3779b97f4a7c15ULL);
+}
+
+//------------------------------------------------------------------------------
+vtkIdType vtkErrorDiffusionKernel::ProcessLayer(const float* density, unsigned char* mask)
+{
+  if (this->NX == 0 || this->NY == 0)
+  {
+    return 0;
+  }
+  const bool steady = this->BoundaryMode == BOUNDARY_STEADY_STATE;
+  if (this->LayersDone == 0 && steady && this->WarmUpLayers > 0)
+  {
+    // Whole cycles, so layer 0 keeps its phase.
+    const int warmUp = 4 * ((this->WarmUpLayers + 3) / 4);
+    std::vector<unsigned char> discarded(this->Current.size());
+    for (int w = 0; w < warmUp; ++w)
+    {
+      this->ScanLayer(density, discarded.data(), this->FirstLayer - warmUp + w, true);
+      std::swap(this->Current, this->Next);
+      std::fill(this->Next.begin(), this->Next.end(), 0.0f);
+    }
+  }
+  const bool nextLayerExists = steady || this->LayersDone + 1 < this->NZ;
+  const vtkIdType count =
+    this->ScanLayer(density, mask, this->FirstLayer + this->LayersDone, nextLayerExists);
+  std::swap(this->Current, this->Next);
+  std::fill(this->Next.begin(), this->Next.end(), 0.0f);
+  ++this->LayersDone;
+  return count;
+}
+
+//------------------------------------------------------------------------------
+vtkIdType vtkErrorDiffusionKernel::ScanLayer(
+  const float* density, unsigned char* mask, int layer, bool nextLayerExists)
+{
+  const LayerScan s = GetLayerScan(this->NX, this->NY, layer);
+  float* cur = this->Current.data();
+  float* nxt = this->Next.data();
+  const float scale = static_cast<float>(this->ModulationScale);
+  const vtkIdType V = s.VStride;
+
+  float cachedG = -1.0f;
+  float w[6] = { 0, 0, 0, 0, 0, 0 };
+  float modulation = 0.0f;
+  vtkIdType count = 0;
+
+  for (int q = 0; q < s.NV; ++q)
+  {
+    const bool oddRow = (q & 1) != 0;
+    const vtkIdType d = oddRow ? -s.UStride : s.UStride;
+    vtkIdType idx = s.Start + q * V + (oddRow ? (s.NU - 1) * s.UStride : 0);
+    const bool hasPrevRow = q > 0;
+    const bool hasNextRow = q + 1 < s.NV;
+    const bool fullRow = hasPrevRow && hasNextRow && nextLayerExists;
+    for (int p = 0; p < s.NU; ++p, idx += d)
+    {
+      const float g = density[idx];
+      if (!(g > 0.0f))
+      {
+        mask[idx] = 0;
+        continue;
+      }
+      if (g >= 1.0f)
+      {
+        mask[idx] = 1;
+        ++count;
+        continue;
+      }
+      if (g != cachedG)
+      {
+        const auto params = this->Table.Evaluate(g);
+        std::copy(params.Weights.begin(), params.Weights.end(), w);
+        modulation = scale * params.Modulation;
+        cachedG = g;
+      }
+      const float value = g + cur[idx];
+      const float noise = modulation * this->Random.Uniform();
+      const float threshold = g <= 0.5f ? 0.5f + noise : 0.5f - noise;
+      const unsigned char b = value >= threshold ? 1 : 0;
+      mask[idx] = b;
+      count += b;
+      const float e = value - static_cast<float>(b);
+
+      const bool hasPrevU = p > 0;
+      const bool hasNextU = p + 1 < s.NU;
+      if (fullRow && hasPrevU && hasNextU)
+      {
+        cur[idx + d] += e * w[TARGET_U];
+        cur[idx - d + V] += e * w[TARGET_BACK_V];
+        cur[idx + V] += e * w[TARGET_V];
+        nxt[idx - V] += e * w[TARGET_Z_BACKV];
+        nxt[idx - d] += e * w[TARGET_Z_BACKU];
+        nxt[idx] += e * w[TARGET_Z];
+        continue;
+      }
+      // A face: the targets that exist share the error in proportion to their weights.
+      const bool valid[6] = { hasNextU, hasPrevU && hasNextRow, hasNextRow,
+        hasPrevRow && nextLayerExists, hasPrevU && nextLayerExists, nextLayerExists };
+      float sum = 0.0f;
+      for (int t = 0; t < 6; ++t)
+      {
+        sum += valid[t] ? w[t] : 0.0f;
+      }
+      if (!(sum > 0.0f))
+      {
+        continue; // the last voxel of the volume: nowhere to go
+      }
+      const float f = e / sum;
+      if (valid[TARGET_U])
+      {
+        cur[idx + d] += f * w[TARGET_U];
+      }
+      if (valid[TARGET_BACK_V])
+      {
+        cur[idx - d + V] += f * w[TARGET_BACK_V];
+      }
+      if (valid[TARGET_V])
+      {
+        cur[idx + V] += f * w[TARGET_V];
+      }
+      if (valid[TARGET_Z_BACKV])
+      {
+        nxt[idx - V] += f * w[TARGET_Z_BACKV];
+      }
+      if (valid[TARGET_Z_BACKU])
+      {
+        nxt[idx - d] += f * w[TARGET_Z_BACKU];
+      }
+      if (valid[TARGET_Z])
+      {
+        nxt[idx] += f * w[TARGET_Z];
+      }
+    }
+  }
+  return count;
+}

@@ -1,0 +1,156 @@
+/**
+ * @class   vtkErrorDiffusionKernel
+ * @brief   The 3D error-diffusion algorithm, layer by layer, without the VTK pipeline.
+ *
+ * Turns a density volume g(x, y, z) in [0, 1] into a binary volume b whose
+ * ones are the samples (paper section 3). The caller feeds the layers in z
+ * order, one ProcessLayer() call each, and gets each layer's binary mask back:
+ * the kernel itself only keeps two layers of accumulated error, so memory is
+ * O(nx * ny) whatever nz is, and time is O(voxels).
+ *
+ * Scan order (rotated serpentine): layers are processed along +z; every four
+ * layers form a scanning cycle in which the in-layer serpentine is rotated by
+ * 90 degrees per layer. With u the direction of the first row and v the
+ * direction in which rows advance, the four phases of a cycle are
+ * (u, v) = (+x, +y), (+y, -x), (-x, -y), (-y, +x). Odd rows run against u.
+ * The phase of a layer is its global z index modulo 4, so pieces of one volume
+ * sampled separately share the phase of the whole volume.
+ *
+ * Error filter: A100, A-110, A010, A0-11, A-101, A001 with offsets written for
+ * the first phase ((1,0,0) is the next voxel of the row, (0,1,0) the same
+ * voxel of the next row, (0,0,1) the voxel below in the next layer); in other
+ * phases and on odd rows the offsets turn and mirror with the scan. Weights and
+ * m(g) come from a vtkErrorDiffusionParameterTable.
+ *
+ * Threshold: t = 0.5 + s * r * m(g) with r uniform in [0, 1) from a seeded
+ * PCG32 generator and s the ModulationScale (s = 1 is the paper's Eq. 1;
+ * s = 0.5 is Zhou and Fang's 0..255 code). For g > 0.5 the whole process is
+ * mirrored: t = 0.5 - s * r * m(1 - g), so the pattern at density g is the
+ * complement of the pattern at 1 - g given the same random numbers (the
+ * paper's "the minority voxels of g and 1 - g are alike").
+ *
+ * Voxels with g <= 0 (NaN included) are never sampled and g >= 1 always
+ * sampled; both absorb the error that reaches them, so an empty region stays
+ * empty and error does not leak across it.
+ *
+ * Boundaries (the count N = sum of g is kept in expectation either way):
+ * - BOUNDARY_RENORMALIZE (the paper-faithful behaviour): at every face the
+ *   weights of the targets that exist are renormalised to sum 1, and the scan
+ *   starts with no accumulated error. The count is exact, but the first layers
+ *   come out empty (the error buffer must charge first) and the last layer
+ *   receives all the error that the volume still carries.
+ * - BOUNDARY_STEADY_STATE (default): the scan starts as if it had been
+ *   running. WarmUpLayers virtual layers with the first layer's density are
+ *   processed first (their samples are discarded) so the error buffer
+ *   entering layer 0 has its steady-state charge; at the end, the error the
+ *   last layer passes on to the next one leaves the volume, like it would in
+ *   the interior. What enters equals what leaves in expectation, so the
+ *   count stays N = sum g in expectation. The lateral faces renormalise like
+ *   the paper-faithful mode.
+ */
+#ifndef vtkErrorDiffusionKernel_h
+#define vtkErrorDiffusionKernel_h
+
+#include "vtkErrorDiffusionParameterTable.h"
+#include "vtkFiltersBlueNoiseModule.h" // for export macro
+#include "vtkType.h"                   // for vtkIdType
+
+#include <cstdint>
+#include <vector>
+
+class VTKFILTERSBLUENOISE_EXPORT vtkErrorDiffusionKernel
+{
+public:
+  enum BoundaryModes
+  {
+    BOUNDARY_RENORMALIZE = 0,
+    BOUNDARY_STEADY_STATE = 1
+  };
+
+  /// The six filter targets, in the order of the table's coefficients.
+  enum Target
+  {
+    TARGET_U = 0,       ///< A100: next voxel of the row
+    TARGET_BACK_V = 1,  ///< A-110: previous voxel, next row
+    TARGET_V = 2,       ///< A010: same voxel, next row
+    TARGET_Z_BACKV = 3, ///< A0-11: same voxel of the previous row, next layer
+    TARGET_Z_BACKU = 4, ///< A-101: previous voxel of the row, next layer
+    TARGET_Z = 5        ///< A001: same voxel, next layer
+  };
+
+  /**
+   * Where the scan of one layer goes, in memory indices of a layer stored x
+   * fastest: voxel p of row q is at Start + q * VStride + p * UStride on even
+   * rows and Start + q * VStride + (NU - 1 - p) * UStride on odd rows.
+   */
+  struct LayerScan
+  {
+    int Phase = 0;         ///< 0..3 within the scanning cycle
+    int NU = 0;            ///< voxels per row
+    int NV = 0;            ///< rows per layer
+    vtkIdType UStride = 0; ///< memory step of +u (the first row's direction)
+    vtkIdType VStride = 0; ///< memory step from one row to the next
+    vtkIdType Start = 0;   ///< memory index of the first voxel scanned
+  };
+
+  static LayerScan GetLayerScan(int nx, int ny, int phase);
+
+  /**
+   * Offsets (dx, dy, dz) of the six targets for row q of a layer with the
+   * given scan; used by tests to check the geometry the kernel runs.
+   */
+  static void GetTargetOffsets(const LayerScan& scan, int row, int offsets[6][3]);
+
+  vtkErrorDiffusionKernel();
+
+  void SetParameters(const vtkErrorDiffusionParameterTable& table) { this->Table = table; }
+  const vtkErrorDiffusionParameterTable& GetParameters() const { return this->Table; }
+  void SetModulationScale(double s) { this->ModulationScale = s; }
+  void SetSeed(std::uint64_t seed) { this->Seed = seed; }
+  void SetBoundaryMode(int mode) { this->BoundaryMode = mode; }
+  void SetWarmUpLayers(int n) { this->WarmUpLayers = n < 0 ? 0 : n; }
+
+  /**
+   * Start a run over nx * ny * nz voxels whose first layer has global z index
+   * firstLayer (it sets the scan phase). Resets the error and the generator.
+   */
+  void Begin(int nx, int ny, int nz, int firstLayer = 0);
+
+  /**
+   * Sample the next layer. density: nx * ny values, x fastest; mask receives
+   * 0 or 1 per voxel in the same layout. Returns the number of samples.
+   */
+  vtkIdType ProcessLayer(const float* density, unsigned char* mask);
+
+  /// Layers processed since Begin().
+  int GetLayersDone() const { return this->LayersDone; }
+
+private:
+  struct Generator
+  {
+    std::uint64_t State = 0;
+    std::uint64_t Increment = 1;
+    void Seed(std::uint64_t seed, std::uint64_t stream);
+    inline float Uniform();
+  };
+
+  vtkIdType ScanLayer(
+    const float* density, unsigned char* mask, int phase, bool nextLayerExists);
+
+  vtkErrorDiffusionParameterTable Table;
+  double ModulationScale = 1.0;
+  std::uint64_t Seed = 0;
+  int BoundaryMode = BOUNDARY_STEADY_STATE;
+  int WarmUpLayers = 32;
+
+  int NX = 0;
+  int NY = 0;
+  int NZ = 0;
+  int FirstLayer = 0;
+  int LayersDone = 0;
+  Generator Random;
+  std::vector<float> Current; // error accumulated for the layer being scanned
+  std::vector<float> Next;    // error passed on to the following layer
+};
+
+#endif

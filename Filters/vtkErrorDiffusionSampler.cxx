@@ -1,0 +1,493 @@
+#include "vtkErrorDiffusionSampler.h"
+
+#include "vtkArrayDispatch.h"
+#include "vtkCellArray.h"
+#include "vtkDataArrayRange.h"
+#include "vtkDoubleArray.h"
+#include "vtkErrorDiffusionKernel.h"
+#include "vtkErrorDiffusionParameterTable.h"
+#include "vtkFieldData.h"
+#include "vtkFloatArray.h"
+#include "vtkIdList.h"
+#include "vtkIdTypeArray.h"
+#include "vtkImageData.h"
+#include "vtkInformation.h"
+#include "vtkInformationVector.h"
+#include "vtkIntArray.h"
+#include "vtkMatrix3x3.h"
+#include "vtkObjectFactory.h"
+#include "vtkPiecewiseFunction.h"
+#include "vtkPointData.h"
+#include "vtkPoints.h"
+#include "vtkPolyData.h"
+#include "vtkSMPTools.h"
+#include "vtkStreamingDemandDrivenPipeline.h"
+#include "vtkUnsignedCharArray.h"
+#include "vtkVersionMacros.h"
+
+#include <algorithm>
+#include <cmath>
+#include <numeric>
+#include <vector>
+
+vtkStandardNewMacro(vtkErrorDiffusionSampler);
+vtkCxxSetObjectMacro(vtkErrorDiffusionSampler, TransferFunction, vtkPiecewiseFunction);
+
+namespace
+{
+// The mapping used for a scalar range of zero width.
+constexpr int DENSITY_STEP = -1;
+
+// Array value -> density in [0, 1].
+struct DensityMap
+{
+  int Mode = vtkErrorDiffusionSampler::DENSITY_IDENTITY;
+  double Low = 0.0;
+  double InverseWidth = 1.0;
+  double Scale = 1.0;
+  vtkPiecewiseFunction* Function = nullptr;
+
+  float operator()(double x) const
+  {
+    double g = x;
+    if (this->Mode == vtkErrorDiffusionSampler::DENSITY_SCALAR_RANGE)
+    {
+      g = (x - this->Low) * this->InverseWidth;
+    }
+    else if (this->Mode == DENSITY_STEP)
+    {
+      g = x >= this->Low ? 1.0 : 0.0;
+    }
+    else if (this->Mode == vtkErrorDiffusionSampler::DENSITY_TRANSFER_FUNCTION)
+    {
+      g = std::isnan(x) ? 0.0 : this->Function->GetValue(x);
+    }
+    g *= this->Scale;
+    if (!(g > 0.0)) // NaN too
+    {
+      return 0.0f;
+    }
+    return g >= 1.0 ? 1.0f : static_cast<float>(g);
+  }
+};
+
+// Densities of the tuples [begin, end) of the array, in order.
+struct LayerDensityWorker
+{
+  template <typename ArrayT>
+  void operator()(ArrayT* array, vtkIdType begin, vtkIdType end, int component,
+    const DensityMap& map, float* out) const
+  {
+    const auto tuples = vtk::DataArrayTupleRange(array, begin, end);
+    if (component >= 0)
+    {
+      for (const auto tuple : tuples)
+      {
+        *out++ = map(static_cast<double>(tuple[component]));
+      }
+      return;
+    }
+    for (const auto tuple : tuples)
+    {
+      double sum = 0.0;
+      for (const auto c : tuple)
+      {
+        sum += static_cast<double>(c) * static_cast<double>(c);
+      }
+      *out++ = map(std::sqrt(sum));
+    }
+  }
+};
+
+void FillLayerDensity(vtkDataArray* array, vtkIdType begin, vtkIdType end, int component,
+  const DensityMap& map, float* out)
+{
+  LayerDensityWorker worker;
+  if (!vtkArrayDispatch::Dispatch::Execute(array, worker, begin, end, component, map, out))
+  {
+    worker(array, begin, end, component, map, out);
+  }
+}
+
+void AddFieldArray(vtkFieldData* fd, vtkDataArray* array, const char* name, int components)
+{
+  array->SetName(name);
+  array->SetNumberOfComponents(components);
+  array->SetNumberOfTuples(1);
+  fd->AddArray(array);
+}
+}
+
+//------------------------------------------------------------------------------
+vtkErrorDiffusionSampler::vtkErrorDiffusionSampler()
+{
+  this->SetNumberOfOutputPorts(2);
+  this->SetInputArrayToProcess(
+    0, 0, 0, vtkDataObject::FIELD_ASSOCIATION_POINTS, vtkDataSetAttributes::SCALARS);
+}
+
+//------------------------------------------------------------------------------
+vtkErrorDiffusionSampler::~vtkErrorDiffusionSampler()
+{
+  this->SetTransferFunction(nullptr);
+}
+
+//------------------------------------------------------------------------------
+vtkMTimeType vtkErrorDiffusionSampler::GetMTime()
+{
+  vtkMTimeType t = this->Superclass::GetMTime();
+  if (this->TransferFunction)
+  {
+    t = std::max(t, this->TransferFunction->GetMTime());
+  }
+  return t;
+}
+
+//------------------------------------------------------------------------------
+vtkImageData* vtkErrorDiffusionSampler::GetMaskOutput()
+{
+  return vtkImageData::SafeDownCast(this->GetOutputDataObject(1));
+}
+
+//------------------------------------------------------------------------------
+int vtkErrorDiffusionSampler::FillInputPortInformation(int, vtkInformation* info)
+{
+  info->Set(vtkAlgorithm::INPUT_REQUIRED_DATA_TYPE(), "vtkImageData");
+  return 1;
+}
+
+//------------------------------------------------------------------------------
+int vtkErrorDiffusionSampler::FillOutputPortInformation(int port, vtkInformation* info)
+{
+  info->Set(vtkDataObject::DATA_TYPE_NAME(), port == 1 ? "vtkImageData" : "vtkPolyData");
+  return 1;
+}
+
+//------------------------------------------------------------------------------
+int vtkErrorDiffusionSampler::RequestInformation(
+  vtkInformation*, vtkInformationVector** inputVector, vtkInformationVector* outputVector)
+{
+  // The mask lives on the input's grid.
+  vtkInformation* inInfo = inputVector[0]->GetInformationObject(0);
+  vtkInformation* maskInfo = outputVector->GetInformationObject(1);
+  const auto sddp = vtkStreamingDemandDrivenPipeline::WHOLE_EXTENT();
+  if (inInfo->Has(sddp))
+  {
+    maskInfo->CopyEntry(inInfo, sddp);
+  }
+  maskInfo->CopyEntry(inInfo, vtkDataObject::ORIGIN());
+  maskInfo->CopyEntry(inInfo, vtkDataObject::SPACING());
+  maskInfo->CopyEntry(inInfo, vtkDataObject::DIRECTION());
+  vtkDataObject::SetPointDataActiveScalarInfo(maskInfo, VTK_UNSIGNED_CHAR, 1);
+  return 1;
+}
+
+//------------------------------------------------------------------------------
+bool vtkErrorDiffusionSampler::IsAborted()
+{
+#if VTK_VERSION_NUMBER >= VTK_VERSION_CHECK(9, 2, 20220831)
+  return this->CheckAbort();
+#else
+  return this->GetAbortExecute() != 0;
+#endif
+}
+
+//------------------------------------------------------------------------------
+int vtkErrorDiffusionSampler::RequestData(
+  vtkInformation*, vtkInformationVector** inputVector, vtkInformationVector* outputVector)
+{
+  vtkImageData* input = vtkImageData::GetData(inputVector[0], 0);
+  vtkPolyData* output = vtkPolyData::GetData(outputVector, 0);
+  vtkImageData* mask = vtkImageData::GetData(outputVector, 1);
+  output->Initialize();
+  mask->Initialize();
+  if (!input)
+  {
+    vtkErrorMacro("No input image.");
+    return 0;
+  }
+
+  // --- Validate everything before any work, so bad input costs nothing.
+  int extent[6];
+  input->GetExtent(extent);
+  const int nx = extent[1] - extent[0] + 1;
+  const int ny = extent[3] - extent[2] + 1;
+  const int nz = extent[5] - extent[4] + 1;
+  if (nx <= 0 || ny <= 0 || nz <= 0)
+  {
+    vtkErrorMacro("The input image has an empty extent [" << extent[0] << ", " << extent[1]
+                                                          << ", " << extent[2] << ", " << extent[3]
+                                                          << ", " << extent[4] << ", " << extent[5]
+                                                          << "]: nothing to sample.");
+    return 0;
+  }
+  int association = -1;
+  vtkAbstractArray* abstractArray =
+    this->GetInputAbstractArrayToProcess(0, inputVector, association);
+  if (!abstractArray)
+  {
+    vtkErrorMacro("No density array: select a point-data array with SetInputArrayToProcess "
+                  "(the input has no active scalars).");
+    return 0;
+  }
+  if (association != vtkDataObject::FIELD_ASSOCIATION_POINTS)
+  {
+    vtkErrorMacro("The density array '" << (abstractArray->GetName() ? abstractArray->GetName() : "")
+                                        << "' is not point data: only point data is sampled.");
+    return 0;
+  }
+  vtkDataArray* array = vtkDataArray::SafeDownCast(abstractArray);
+  if (!array)
+  {
+    vtkErrorMacro("The density array '" << (abstractArray->GetName() ? abstractArray->GetName() : "")
+                                        << "' is not numeric (" << abstractArray->GetClassName()
+                                        << ").");
+    return 0;
+  }
+  const vtkIdType voxels = static_cast<vtkIdType>(nx) * ny * nz;
+  if (array->GetNumberOfTuples() != voxels)
+  {
+    vtkErrorMacro("The density array has " << array->GetNumberOfTuples() << " tuples for "
+                                           << voxels << " voxels.");
+    return 0;
+  }
+  if (this->Component >= array->GetNumberOfComponents())
+  {
+    vtkErrorMacro("Component " << this->Component << " is out of range: the array '"
+                               << (array->GetName() ? array->GetName() : "") << "' has "
+                               << array->GetNumberOfComponents() << " component(s).");
+    return 0;
+  }
+  if (!std::isfinite(this->DensityScale) || this->DensityScale < 0.0)
+  {
+    vtkErrorMacro("DensityScale must be finite and >= 0, not " << this->DensityScale << ".");
+    return 0;
+  }
+  if (!std::isfinite(this->ModulationScale) || this->ModulationScale < 0.0)
+  {
+    vtkErrorMacro("ModulationScale must be finite and >= 0, not " << this->ModulationScale << ".");
+    return 0;
+  }
+
+  DensityMap map;
+  map.Mode = this->DensityMapping;
+  map.Scale = this->DensityScale;
+  if (this->DensityMapping == DENSITY_TRANSFER_FUNCTION)
+  {
+    if (!this->TransferFunction || this->TransferFunction->GetSize() == 0)
+    {
+      vtkErrorMacro("DensityMapping is TransferFunction but no (or an empty) transfer function "
+                    "is set.");
+      return 0;
+    }
+    map.Function = this->TransferFunction;
+  }
+  else if (this->DensityMapping == DENSITY_SCALAR_RANGE)
+  {
+    double range[2] = { this->ScalarRange[0], this->ScalarRange[1] };
+    if (!this->UseCustomScalarRange)
+    {
+      array->GetFiniteRange(range, this->Component);
+    }
+    if (!std::isfinite(range[0]) || !std::isfinite(range[1]) || range[0] > range[1])
+    {
+      vtkErrorMacro("Invalid scalar range [" << range[0] << ", " << range[1] << "].");
+      return 0;
+    }
+    map.Low = range[0];
+    if (range[1] > range[0])
+    {
+      map.InverseWidth = 1.0 / (range[1] - range[0]);
+    }
+    else
+    {
+      // A single value is the top of its own range: density 1 there (times
+      // DensityScale), 0 below, so a constant field samples uniformly.
+      vtkWarningMacro("The scalar range is the single value " << range[0]
+                                                              << ": it maps to density 1.");
+      map.Mode = DENSITY_STEP;
+    }
+  }
+
+  vtkErrorDiffusionParameterTable table;
+  if (this->ParameterSet == PARAMETERS_FIXED)
+  {
+    table = vtkErrorDiffusionParameterTable::Fixed();
+  }
+  else if (this->ParameterSet == PARAMETERS_CUSTOM)
+  {
+    std::string error;
+    if (this->ParameterFile.empty())
+    {
+      vtkErrorMacro("ParameterSet is Custom but no ParameterFile is set.");
+      return 0;
+    }
+    if (!vtkErrorDiffusionParameterTable::ReadFile(this->ParameterFile, table, error))
+    {
+      vtkErrorMacro("Cannot use the parameter file: " << error);
+      return 0;
+    }
+  }
+  else
+  {
+    table = vtkErrorDiffusionParameterTable::Paper();
+  }
+
+  // --- Sample layer by layer.
+  vtkErrorDiffusionKernel kernel;
+  kernel.SetParameters(table);
+  kernel.SetModulationScale(this->ModulationScale);
+  kernel.SetSeed(static_cast<std::uint64_t>(static_cast<unsigned int>(this->Seed)));
+  kernel.SetBoundaryMode(this->BoundaryMode);
+  kernel.SetWarmUpLayers(this->WarmUpLayers);
+  kernel.Begin(nx, ny, nz, extent[4]);
+
+  const vtkIdType layerSize = static_cast<vtkIdType>(nx) * ny;
+  std::vector<float> density(layerSize);
+  std::vector<unsigned char> layerMask;
+  vtkSmartPointer<vtkUnsignedCharArray> maskArray;
+  if (this->GenerateMask)
+  {
+    maskArray = vtkSmartPointer<vtkUnsignedCharArray>::New();
+    maskArray->SetName("SampleMask");
+    maskArray->SetNumberOfValues(voxels);
+  }
+  else
+  {
+    layerMask.resize(layerSize);
+  }
+  std::vector<vtkIdType> sampleIds;
+  std::vector<float> sampleDensity;
+
+  const int progressStride = std::max(1, nz / 100);
+  for (int k = 0; k < nz; ++k)
+  {
+    if (k % progressStride == 0)
+    {
+      this->UpdateProgress(static_cast<double>(k) / nz);
+      if (this->IsAborted())
+      {
+        output->Initialize();
+        return 1;
+      }
+    }
+    const vtkIdType first = k * layerSize;
+    FillLayerDensity(array, first, first + layerSize, this->Component, map, density.data());
+    unsigned char* bits = maskArray ? maskArray->GetPointer(first) : layerMask.data();
+    if (kernel.ProcessLayer(density.data(), bits) == 0)
+    {
+      continue;
+    }
+    for (vtkIdType i = 0; i < layerSize; ++i)
+    {
+      if (bits[i])
+      {
+        sampleIds.push_back(first + i);
+        sampleDensity.push_back(density[i]);
+      }
+    }
+  }
+
+  // --- Points at voxel centres, in world coordinates.
+  const vtkIdType n = static_cast<vtkIdType>(sampleIds.size());
+  double indexToPhysical[16];
+  vtkImageData::ComputeIndexToPhysicalMatrix(input->GetOrigin(), input->GetSpacing(),
+    input->GetDirectionMatrix()->GetData(), indexToPhysical);
+  vtkNew<vtkPoints> points;
+  points->SetDataType(
+    this->OutputPointsPrecision == DOUBLE_PRECISION ? VTK_DOUBLE : VTK_FLOAT);
+  points->SetNumberOfPoints(n);
+  vtkDataArray* coordinates = points->GetData();
+  vtkSMPTools::For(0, n, [&](vtkIdType begin, vtkIdType end) {
+    for (vtkIdType p = begin; p < end; ++p)
+    {
+      const vtkIdType id = sampleIds[p];
+      const double ijk[3] = { static_cast<double>(extent[0] + id % nx),
+        static_cast<double>(extent[2] + (id / nx) % ny),
+        static_cast<double>(extent[4] + id / layerSize) };
+      double xyz[3];
+      for (int r = 0; r < 3; ++r)
+      {
+        xyz[r] = indexToPhysical[4 * r] * ijk[0] + indexToPhysical[4 * r + 1] * ijk[1] +
+          indexToPhysical[4 * r + 2] * ijk[2] + indexToPhysical[4 * r + 3];
+      }
+      coordinates->SetTuple(p, xyz);
+    }
+  });
+  output->SetPoints(points);
+
+  vtkNew<vtkIdTypeArray> offsets;
+  offsets->SetNumberOfValues(n + 1);
+  std::iota(offsets->GetPointer(0), offsets->GetPointer(0) + n + 1, vtkIdType(0));
+  vtkNew<vtkIdTypeArray> connectivity;
+  connectivity->SetNumberOfValues(n);
+  std::iota(connectivity->GetPointer(0), connectivity->GetPointer(0) + n, vtkIdType(0));
+  vtkNew<vtkCellArray> verts;
+  verts->SetData(offsets, connectivity);
+  output->SetVerts(verts);
+
+  // --- Attributes of the sampled voxels.
+  vtkPointData* inPD = input->GetPointData();
+  vtkPointData* outPD = output->GetPointData();
+  outPD->CopyAllocate(inPD, n);
+  vtkNew<vtkIdList> fromIds;
+  fromIds->SetNumberOfIds(n);
+  std::copy(sampleIds.begin(), sampleIds.end(), fromIds->GetPointer(0));
+  vtkNew<vtkIdList> toIds;
+  toIds->SetNumberOfIds(n);
+  std::iota(toIds->GetPointer(0), toIds->GetPointer(0) + n, vtkIdType(0));
+  outPD->CopyData(inPD, fromIds, toIds);
+  outPD->Squeeze();
+
+  vtkNew<vtkFloatArray> densityArray;
+  densityArray->SetName("Density");
+  densityArray->SetNumberOfValues(n);
+  std::copy(sampleDensity.begin(), sampleDensity.end(), densityArray->GetPointer(0));
+  outPD->AddArray(densityArray);
+
+  // --- The sampling grid, for the spectrum.
+  vtkFieldData* fd = output->GetFieldData();
+  vtkNew<vtkDoubleArray> origin;
+  AddFieldArray(fd, origin, "SamplingGridOrigin", 3);
+  origin->SetTuple(0, input->GetOrigin());
+  vtkNew<vtkDoubleArray> spacing;
+  AddFieldArray(fd, spacing, "SamplingGridSpacing", 3);
+  spacing->SetTuple(0, input->GetSpacing());
+  vtkNew<vtkIntArray> gridExtent;
+  AddFieldArray(fd, gridExtent, "SamplingGridExtent", 6);
+  std::copy(extent, extent + 6, gridExtent->GetPointer(0));
+  vtkNew<vtkDoubleArray> direction;
+  AddFieldArray(fd, direction, "SamplingGridDirection", 9);
+  direction->SetTuple(0, input->GetDirectionMatrix()->GetData());
+
+  if (maskArray)
+  {
+    mask->SetExtent(extent);
+    mask->SetOrigin(input->GetOrigin());
+    mask->SetSpacing(input->GetSpacing());
+    mask->SetDirectionMatrix(input->GetDirectionMatrix());
+    mask->GetPointData()->SetScalars(maskArray);
+  }
+  this->UpdateProgress(1.0);
+  return 1;
+}
+
+//------------------------------------------------------------------------------
+void vtkErrorDiffusionSampler::PrintSelf(ostream& os, vtkIndent indent)
+{
+  this->Superclass::PrintSelf(os, indent);
+  os << indent << "Component: " << this->Component << "\n";
+  os << indent << "DensityMapping: " << this->DensityMapping << "\n";
+  os << indent << "ScalarRange: " << this->ScalarRange[0] << ", " << this->ScalarRange[1] << "\n";
+  os << indent << "UseCustomScalarRange: " << this->UseCustomScalarRange << "\n";
+  os << indent << "TransferFunction: " << this->TransferFunction << "\n";
+  os << indent << "DensityScale: " << this->DensityScale << "\n";
+  os << indent << "ParameterSet: " << this->ParameterSet << "\n";
+  os << indent << "ParameterFile: " << this->ParameterFile << "\n";
+  os << indent << "ModulationScale: " << this->ModulationScale << "\n";
+  os << indent << "Seed: " << this->Seed << "\n";
+  os << indent << "BoundaryMode: " << this->BoundaryMode << "\n";
+  os << indent << "WarmUpLayers: " << this->WarmUpLayers << "\n";
+  os << indent << "GenerateMask: " << this->GenerateMask << "\n";
+  os << indent << "OutputPointsPrecision: " << this->OutputPointsPrecision << "\n";
+}

@@ -1,0 +1,31 @@
+// Running the sampler in tests.
+#ifndef SamplerTestUtilities_h
+#define SamplerTestUtilities_h
+
+#include "BlueNoiseTestUtilities.h"
+#include "vtkErrorDiffusionSampler.h"
+#include "vtkImageData.h"
+#include "vtkNew.h"
+#include "vtkPolyData.h"
+
+namespace bluenoise_test
+{
+// Samples `image` with the default settings changed by `configure`.
+inline vtkSmartPointer<vtkPolyData> Sample(vtkImageData* image,
+  const std::function<void(vtkErrorDiffusionSampler*)>& configure = nullptr)
+{
+  vtkNew<vtkErrorDiffusionSampler> sampler;
+  sampler->SetInputData(image);
+  sampler->SetDensityMappingToIdentity();
+  if (configure)
+  {
+    configure(sampler);
+  }
+  sampler->Update();
+  auto out = vtkSmartPointer<vtkPolyData>::New();
+  out->ShallowCopy(sampler->GetOutput());
+  return out;
+}
+}
+
+#endif

@@ -1,0 +1,7 @@
+bluenoise_add_test(TestErrorDiffusionParameterTable LABELS sampler)
+bluenoise_add_test(TestErrorDiffusionSamplerCounts LABELS sampler)
+bluenoise_add_test(TestErrorDiffusionSamplerDeterminism LABELS sampler)
+bluenoise_add_test(TestErrorDiffusionScanGeometry LABELS sampler)
+bluenoise_add_test(TestErrorDiffusionSamplerGeometry LABELS sampler LIBS VTK::CommonTransforms VTK::CommonMath)
+bluenoise_add_test(TestErrorDiffusionSamplerAttributes LABELS sampler)
+bluenoise_add_test(TestErrorDiffusionSamplerBadInput LABELS sampler)

@@ -1,0 +1,124 @@
+// The parameter table: Table 1 verbatim, interpolation between keys, the
+// g > 0.5 mirror, and the text format (round trip, errors naming the line).
+#include "BlueNoiseTestUtilities.h"
+#include "vtkErrorDiffusionParameterTable.h"
+
+#include <cmath>
+#include <sstream>
+
+using namespace bluenoise_test;
+
+namespace
+{
+bool Near(double a, double b, double tol = 1e-6)
+{
+  return std::abs(a - b) <= tol;
+}
+
+void ExpectParseError(const std::string& text, const std::string& expected)
+{
+  std::istringstream in(text);
+  vtkErrorDiffusionParameterTable table;
+  std::string error;
+  const bool ok = vtkErrorDiffusionParameterTable::Parse(in, table, error);
+  Check(!ok, "malformed table accepted: " + text);
+  Check(error.find(expected) != std::string::npos,
+    "error '" + error + "' does not contain '" + expected + "'");
+}
+}
+
+int main()
+{
+  const auto paper = vtkErrorDiffusionParameterTable::Paper();
+  Check(paper.GetKeys().size() == 17, "Table 1 has 17 key levels");
+  Check(paper.GetKeys()[1].Level == 8 && paper.GetKeys()[1].Coefficients[0] == 525 &&
+      paper.GetKeys()[16].Modulation == 1.23,
+    "Table 1 values");
+
+  // At a key: A / M exactly.
+  {
+    const auto p = paper.Evaluate(8.0 / 255.0);
+    const double m = 525 + 319 + 719 + 291 + 132 + 204;
+    Check(Near(p.Weights[0], 525 / m) && Near(p.Weights[5], 204 / m) && Near(p.Modulation, 1.19),
+      "parameters at key 8");
+    double sum = 0;
+    for (float w : p.Weights)
+    {
+      sum += w;
+    }
+    Check(Near(sum, 1.0), "weights sum to 1");
+  }
+  // Halfway between keys 8 and 16: the mean of the normalised parameters.
+  {
+    const auto a = paper.Evaluate(8.0 / 255.0);
+    const auto b = paper.Evaluate(16.0 / 255.0);
+    const auto p = paper.Evaluate(12.0 / 255.0);
+    bool ok = Near(p.Modulation, 0.5 * (a.Modulation + b.Modulation));
+    for (int c = 0; c < 6; ++c)
+    {
+      ok = ok && Near(p.Weights[c], 0.5 * (a.Weights[c] + b.Weights[c]));
+    }
+    Check(ok, "linear interpolation between keys 8 and 16");
+  }
+  // Mirror: g and 1 - g share their parameters.
+  for (double level : { 3.0, 8.0, 50.5, 100.0, 127.0 })
+  {
+    const auto lo = paper.Evaluate(level / 255.0);
+    const auto hi = paper.Evaluate(1.0 - level / 255.0);
+    bool ok = Near(lo.Modulation, hi.Modulation);
+    for (int c = 0; c < 6; ++c)
+    {
+      ok = ok && Near(lo.Weights[c], hi.Weights[c]);
+    }
+    Check(ok, "mirror at level " + Str(level));
+  }
+  // Below the first and above the last key: clamped.
+  Check(Near(paper.Evaluate(0.0).Modulation, 1.00) && Near(paper.Evaluate(0.5).Modulation, 1.23),
+    "clamping outside the keys");
+
+  const auto fixed = vtkErrorDiffusionParameterTable::Fixed();
+  Check(Near(fixed.Evaluate(0.3).Weights[0], 4.0 / 16.0) &&
+      Near(fixed.Evaluate(0.01).Weights[1], 2.0 / 16.0) && Near(fixed.Evaluate(0.7).Modulation, 1.0),
+    "Fixed parameters");
+
+  // Round trip through the text format.
+  {
+    std::stringstream text;
+    paper.Write(text, "written by the test\nsecond comment line");
+    vtkErrorDiffusionParameterTable back;
+    std::string error;
+    Check(vtkErrorDiffusionParameterTable::Parse(text, back, error), "parse written table: " + error);
+    bool same = back.GetKeys().size() == paper.GetKeys().size();
+    for (size_t i = 0; same && i < back.GetKeys().size(); ++i)
+    {
+      same = back.GetKeys()[i].Level == paper.GetKeys()[i].Level &&
+        back.GetKeys()[i].Coefficients == paper.GetKeys()[i].Coefficients &&
+        back.GetKeys()[i].Modulation == paper.GetKeys()[i].Modulation;
+    }
+    Check(same, "round trip keeps every key");
+  }
+  // Commas, comments and blank lines are accepted.
+  {
+    std::istringstream in("# header\n\n 4, 1,1,1,1,1,1, 0.5  # trailing\n64 2 2 2 2 2 2 1\n");
+    vtkErrorDiffusionParameterTable t;
+    std::string error;
+    Check(vtkErrorDiffusionParameterTable::Parse(in, t, error) && t.GetKeys().size() == 2,
+      "lenient syntax: " + error);
+  }
+  // Malformed tables: the error names the line.
+  ExpectParseError("1 2 3 4 5 6 7\n", "line 1: expected 8 numbers");
+  ExpectParseError("# c\n8 1 1 1 1 1 1 1\n4 1 1 1 1 1 1 1\n", "line 3");
+  ExpectParseError("8 1 1 1 1 1 1 1\n16 1 1 x 1 1 1 1\n", "line 2: 'x' is not a number");
+  ExpectParseError("8 1 -1 1 1 1 1 1\n", "non-negative");
+  ExpectParseError("8 0 0 0 0 0 0 1\n", "line 1");
+  ExpectParseError("200 1 1 1 1 1 1 1\n", "127.5");
+  ExpectParseError("# only comments\n", "no parameter lines");
+  {
+    vtkErrorDiffusionParameterTable t;
+    std::string error;
+    Check(!vtkErrorDiffusionParameterTable::ReadFile("/nonexistent/table.txt", t, error) &&
+        error.find("cannot open") != std::string::npos,
+      "missing file reported");
+  }
+  return Summary("TestErrorDiffusionParameterTable");
+}

@@ -1,0 +1,139 @@
+// Bad input: a clear error and empty outputs, never a crash.
+#include "SamplerTestUtilities.h"
+#include "vtkPiecewiseFunction.h"
+#include "vtkStringArray.h"
+#include "vtkCellData.h"
+#include "vtkExecutive.h"
+
+#include <cmath>
+#include <fstream>
+#include <limits>
+
+using namespace bluenoise_test;
+
+namespace
+{
+void Expect(vtkImageData* image, const std::function<void(vtkErrorDiffusionSampler*)>& configure,
+  const std::string& message, const std::string& what)
+{
+  vtkNew<vtkErrorDiffusionSampler> sampler;
+  vtkNew<MessageObserver> observer;
+  observer->Watch(sampler);
+  observer->Watch(sampler->GetExecutive());
+  sampler->SetInputData(image);
+  sampler->GenerateMaskOn();
+  configure(sampler);
+  sampler->Update();
+  Check(observer->ErrorContains(message),
+    what + ": expected an error containing '" + message + "', got '" + observer->Errors + "'");
+  Check(sampler->GetOutput()->GetNumberOfPoints() == 0 &&
+      sampler->GetMaskOutput()->GetNumberOfPoints() == 0,
+    what + ": outputs are empty");
+}
+}
+
+int main()
+{
+  auto good = MakeConstantVolume(8, 0.2f);
+  auto none = [](vtkErrorDiffusionSampler*) {};
+
+  auto noScalars = vtkSmartPointer<vtkImageData>::New();
+  noScalars->SetDimensions(4, 4, 4);
+  Expect(noScalars, none, "No density array", "no array");
+
+  auto strings = vtkSmartPointer<vtkImageData>::New();
+  strings->SetDimensions(2, 2, 2);
+  vtkNew<vtkStringArray> names;
+  names->SetName("names");
+  names->SetNumberOfValues(8);
+  strings->GetPointData()->AddArray(names);
+  Expect(strings,
+    [](vtkErrorDiffusionSampler* s) {
+      s->SetInputArrayToProcess(0, 0, 0, vtkDataObject::FIELD_ASSOCIATION_POINTS, "names");
+    },
+    "is not numeric", "string array");
+
+  Expect(good,
+    [](vtkErrorDiffusionSampler* s) {
+      s->SetInputArrayToProcess(0, 0, 0, vtkDataObject::FIELD_ASSOCIATION_POINTS, "missing");
+    },
+    "No density array", "unknown array name");
+
+  auto cells = MakeConstantVolume(5, 0.2f);
+  vtkNew<vtkFloatArray> cellValues;
+  cellValues->SetName("cellValues");
+  cellValues->SetNumberOfValues(64);
+  cellValues->Fill(0.5);
+  cells->GetCellData()->AddArray(cellValues);
+  Expect(cells,
+    [](vtkErrorDiffusionSampler* s) {
+      s->SetInputArrayToProcess(0, 0, 0, vtkDataObject::FIELD_ASSOCIATION_CELLS, "cellValues");
+    },
+    "is not point data", "cell array");
+
+  auto empty = vtkSmartPointer<vtkImageData>::New();
+  empty->SetExtent(0, -1, 0, -1, 0, -1);
+  vtkNew<vtkFloatArray> nothing;
+  nothing->SetName("density");
+  empty->GetPointData()->SetScalars(nothing);
+  Expect(empty, none, "empty extent", "empty extent");
+
+  Expect(good, [](vtkErrorDiffusionSampler* s) { s->SetComponent(1); }, "out of range",
+    "component out of range");
+  Expect(good, [](vtkErrorDiffusionSampler* s) { s->SetDensityScale(-1.0); }, "DensityScale",
+    "negative scale");
+  Expect(good,
+    [](vtkErrorDiffusionSampler* s) {
+      s->SetDensityScale(std::numeric_limits<double>::infinity());
+    },
+    "DensityScale", "infinite scale");
+  Expect(good,
+    [](vtkErrorDiffusionSampler* s) {
+      s->SetDensityScale(std::numeric_limits<double>::quiet_NaN());
+    },
+    "DensityScale", "NaN scale");
+  Expect(good, [](vtkErrorDiffusionSampler* s) { s->SetModulationScale(-0.5); },
+    "ModulationScale", "negative modulation scale");
+  Expect(good, [](vtkErrorDiffusionSampler* s) { s->SetDensityMappingToTransferFunction(); },
+    "no (or an empty) transfer function", "missing transfer function");
+  Expect(good,
+    [](vtkErrorDiffusionSampler* s) {
+      s->SetDensityMappingToScalarRange();
+      s->UseCustomScalarRangeOn();
+      s->SetScalarRange(2.0, 1.0);
+    },
+    "Invalid scalar range", "inverted scalar range");
+  Expect(good,
+    [](vtkErrorDiffusionSampler* s) { s->SetParameterSet(vtkErrorDiffusionSampler::PARAMETERS_CUSTOM); },
+    "no ParameterFile", "custom set without file");
+  Expect(good,
+    [](vtkErrorDiffusionSampler* s) {
+      s->SetParameterSet(vtkErrorDiffusionSampler::PARAMETERS_CUSTOM);
+      s->SetParameterFile("/nonexistent/params.txt");
+    },
+    "cannot open", "missing parameter file");
+  const std::string bad = "TestErrorDiffusionSamplerBadInput-params.txt";
+  {
+    std::ofstream out(bad);
+    out << "# a table with a broken second line\n8 1 1 1 1 1 1 1\n16 1 1 1 1 1 1\n";
+  }
+  Expect(good,
+    [&](vtkErrorDiffusionSampler* s) {
+      s->SetParameterSet(vtkErrorDiffusionSampler::PARAMETERS_CUSTOM);
+      s->SetParameterFile(bad.c_str());
+    },
+    "line 3: expected 8 numbers", "malformed parameter file");
+
+  // After an error, a good input works again with the same filter.
+  vtkNew<vtkErrorDiffusionSampler> sampler;
+  vtkNew<MessageObserver> observer;
+  observer->Watch(sampler);
+  observer->Watch(sampler->GetExecutive());
+  sampler->SetInputData(good);
+  sampler->SetDensityScale(-1);
+  sampler->Update();
+  sampler->SetDensityScale(1);
+  sampler->Update();
+  Check(sampler->GetOutput()->GetNumberOfPoints() > 0, "recovers after an error");
+  return Summary("TestErrorDiffusionSamplerBadInput");
+}
