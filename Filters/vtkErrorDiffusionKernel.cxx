@@ -1,6 +1,9 @@
 #include "vtkErrorDiffusionKernel.h"
 
 #include <algorithm>
+#include <map>
+#include <mutex>
+#include <sstream>
 
 namespace
 {
@@ -13,6 +16,11 @@ int PositiveModulo4(int i)
 {
   return ((i % 4) + 4) % 4;
 }
+
+// Calibrated charges per (table, modulation scale): calibration costs a few
+// milliseconds, a sampler may run many times with the same parameters.
+std::mutex ChargeCacheMutex;
+std::map<std::string, std::vector<float>> ChargeCache;
 }
 
 //------------------------------------------------------------------------------
@@ -94,6 +102,101 @@ void vtkErrorDiffusionKernel::Begin(int nx, int ny, int nz, int firstLayer)
   this->Current.assign(layer, 0.0f);
   this->Next.assign(layer, 0.0f);
   this->Random.Seed(this->Seed, 0x9e3779b97f4a7c15ULL);
+  this->KeyLevels.clear();
+  for (const auto& key : this->Table.GetKeys())
+  {
+    this->KeyLevels.push_back(static_cast<float>(key.Level));
+  }
+  if (this->BoundaryMode == BOUNDARY_STEADY_STATE)
+  {
+    this->KeyCharges = GetSteadyStateCharges(this->Table, this->ModulationScale);
+  }
+  else
+  {
+    this->KeyCharges.assign(this->KeyLevels.size(), 0.0f);
+  }
+}
+
+//------------------------------------------------------------------------------
+std::vector<float> vtkErrorDiffusionKernel::GetSteadyStateCharges(
+  const vtkErrorDiffusionParameterTable& table, double modulationScale)
+{
+  std::ostringstream key;
+  table.Write(key);
+  key << "scale " << modulationScale;
+  {
+    std::lock_guard<std::mutex> lock(ChargeCacheMutex);
+    auto found = ChargeCache.find(key.str());
+    if (found != ChargeCache.end())
+    {
+      return found->second;
+    }
+  }
+  // For each key density: run the uncompensated process on a constant box
+  // long enough to reach its steady state, then average the error each voxel
+  // receives (what the scan holds when it reaches it) away from the faces.
+  const int n = 24;
+  const int settle = 64;
+  const int measured = 64;
+  const int margin = 3;
+  std::vector<float> charges;
+  for (const auto& k : table.GetKeys())
+  {
+    vtkErrorDiffusionKernel probe;
+    probe.SetParameters(table);
+    probe.SetModulationScale(modulationScale);
+    probe.SetBoundaryMode(BOUNDARY_RENORMALIZE); // zero charge, no warm-up
+    probe.SetSeed(12345);
+    probe.Begin(n, n, settle + measured + 1);
+    const std::vector<float> density(static_cast<size_t>(n) * n, static_cast<float>(k.Level / 255.0));
+    std::vector<unsigned char> mask(density.size());
+    double sum = 0.0;
+    long count = 0;
+    for (int layer = 0; layer < settle + measured; ++layer)
+    {
+      probe.ScanLayer(density.data(), mask.data(), layer, true);
+      if (layer >= settle)
+      {
+        for (int y = margin; y < n - margin; ++y)
+        {
+          for (int x = margin; x < n - margin; ++x)
+          {
+            sum += probe.Current[x + static_cast<size_t>(n) * y];
+            ++count;
+          }
+        }
+      }
+      std::swap(probe.Current, probe.Next);
+      std::fill(probe.Next.begin(), probe.Next.end(), 0.0f);
+    }
+    charges.push_back(static_cast<float>(sum / count));
+  }
+  std::lock_guard<std::mutex> lock(ChargeCacheMutex);
+  ChargeCache[key.str()] = charges;
+  return charges;
+}
+
+//------------------------------------------------------------------------------
+float vtkErrorDiffusionKernel::ChargeAt(float g) const
+{
+  const float level = 255.0f * (g > 0.5f ? 1.0f - g : g);
+  const size_t n = this->KeyLevels.size();
+  if (n == 0)
+  {
+    return 0.0f;
+  }
+  if (level <= this->KeyLevels.front())
+  {
+    return this->KeyCharges.front();
+  }
+  if (level >= this->KeyLevels.back())
+  {
+    return this->KeyCharges.back();
+  }
+  const size_t i =
+    std::upper_bound(this->KeyLevels.begin(), this->KeyLevels.end(), level) - this->KeyLevels.begin();
+  const float t = (level - this->KeyLevels[i - 1]) / (this->KeyLevels[i] - this->KeyLevels[i - 1]);
+  return this->KeyCharges[i - 1] + t * (this->KeyCharges[i] - this->KeyCharges[i - 1]);
 }
 
 //------------------------------------------------------------------------------
@@ -138,6 +241,7 @@ vtkIdType vtkErrorDiffusionKernel::ScanLayer(
   float cachedG = -1.0f;
   float w[6] = { 0, 0, 0, 0, 0, 0 };
   float modulation = 0.0f;
+  float base = 0.5f; // 0.5 - C(g) below g = 0.5, 0.5 + C(1 - g) above
   vtkIdType count = 0;
 
   for (int q = 0; q < s.NV; ++q)
@@ -167,11 +271,13 @@ vtkIdType vtkErrorDiffusionKernel::ScanLayer(
         const auto params = this->Table.Evaluate(g);
         std::copy(params.Weights.begin(), params.Weights.end(), w);
         modulation = scale * params.Modulation;
+        const float charge = this->ChargeAt(g);
+        base = g <= 0.5f ? 0.5f - charge : 0.5f + charge;
         cachedG = g;
       }
       const float value = g + cur[idx];
       const float noise = modulation * this->Random.Uniform();
-      const float threshold = g <= 0.5f ? 0.5f + noise : 0.5f - noise;
+      const float threshold = g <= 0.5f ? base + noise : base - noise;
       const unsigned char b = value >= threshold ? 1 : 0;
       mask[idx] = b;
       count += b;

@@ -125,6 +125,15 @@ public:
   /// Layers processed since Begin().
   int GetLayersDone() const { return this->LayersDone; }
 
+  /**
+   * The steady-state charge C at each key level of the table: the mean error
+   * a voxel receives once the paper's process has settled at that constant
+   * density (measured on a 24 x 24 box, 64 layers after 64 settling layers,
+   * away from the faces; cached per table and scale).
+   */
+  static std::vector<float> GetSteadyStateCharges(
+    const vtkErrorDiffusionParameterTable& table, double modulationScale);
+
 private:
   struct Generator
   {
@@ -136,12 +145,13 @@ private:
 
   vtkIdType ScanLayer(
     const float* density, unsigned char* mask, int phase, bool nextLayerExists);
+  float ChargeAt(float g) const;
 
   vtkErrorDiffusionParameterTable Table;
   double ModulationScale = 1.0;
   std::uint64_t Seed = 0;
   int BoundaryMode = BOUNDARY_STEADY_STATE;
-  int WarmUpLayers = 32;
+  int WarmUpLayers = 8;
 
   int NX = 0;
   int NY = 0;
@@ -149,6 +159,8 @@ private:
   int FirstLayer = 0;
   int LayersDone = 0;
   Generator Random;
+  std::vector<float> KeyLevels;  // the table's key levels (1/255 units)
+  std::vector<float> KeyCharges; // C at each key level
   std::vector<float> Current; // error accumulated for the layer being scanned
   std::vector<float> Next;    // error passed on to the following layer
 };

@@ -182,7 +182,7 @@ public:
    * last layer pass its error out of the volume; BOUNDARY_RENORMALIZE is the
    * paper-faithful behaviour (empty first layers, error piled into the last
    * layer). WarmUpLayers (rounded up to whole scanning cycles of 4) is the
-   * number of virtual layers used to charge the buffers. Default 32.
+   * number of virtual layers used to settle the buffers. Default 8.
    */
   vtkSetClampMacro(BoundaryMode, int, BOUNDARY_RENORMALIZE, BOUNDARY_STEADY_STATE);
   vtkGetMacro(BoundaryMode, int);
@@ -234,7 +234,7 @@ protected:
   double ModulationScale = 1.0;
   int Seed = 0;
   int BoundaryMode = BOUNDARY_STEADY_STATE;
-  int WarmUpLayers = 32;
+  int WarmUpLayers = 8;
   bool GenerateMask = false;
   int OutputPointsPrecision = SINGLE_PRECISION;
 

@@ -5,3 +5,8 @@ bluenoise_add_test(TestErrorDiffusionScanGeometry LABELS sampler)
 bluenoise_add_test(TestErrorDiffusionSamplerGeometry LABELS sampler LIBS VTK::CommonTransforms VTK::CommonMath)
 bluenoise_add_test(TestErrorDiffusionSamplerAttributes LABELS sampler)
 bluenoise_add_test(TestErrorDiffusionSamplerBadInput LABELS sampler)
+bluenoise_add_test(TestErrorDiffusionSamplerBrain LABELS sampler data LIBS VTK::IOImage VTK::vtksys)
+set_tests_properties(TestErrorDiffusionSamplerBrain PROPERTIES SKIP_RETURN_CODE 125)
+bluenoise_add_test(TestErrorDiffusionSamplerLargeExtent LABELS sampler large TIMEOUT 900)
+# About 2.2 GB for the input alone; keep it from sharing the machine.
+set_tests_properties(TestErrorDiffusionSamplerLargeExtent PROPERTIES RUN_SERIAL ON)

@@ -1,0 +1,25 @@
+#!/usr/bin/env bash
+# Installs what is needed, builds and runs the whole test suite:
+#   1. against the ParaView 5.11 SDK (module, plugin, Python, all tests);
+#   2. VTK-only (no ParaView plugin) against ParaView's VTK through VTK_DIR.
+# Usage: bash scripts/test.sh   (from anywhere; run as root or with sudo rights)
+set -euo pipefail
+root="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
+bash "$root/scripts/install-deps.sh"
+
+paraview_dir=/usr/lib/x86_64-linux-gnu/cmake/paraview-5.11
+jobs="${BLUENOISE_JOBS:-$(nproc)}"
+status=0
+
+run_suite() { # name, cmake args...
+  local name="$1"; shift
+  local dir="$root/_build/$name"
+  echo "=== $name: configure, build, test ($dir)"
+  cmake -S "$root" -B "$dir" -G Ninja -DCMAKE_BUILD_TYPE=Release "$@"
+  cmake --build "$dir" -j "$jobs"
+  (cd "$dir" && ctest --output-on-failure -j "$jobs" --timeout 900) || status=1
+}
+
+run_suite paraview -DParaView_DIR="$paraview_dir"
+run_suite vtk-only -DBLUENOISE_VTK_ONLY=ON -DVTK_DIR="$paraview_dir/vtk"
+exit $status
