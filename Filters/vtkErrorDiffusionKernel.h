@@ -22,9 +22,10 @@
  * phases and on odd rows the offsets turn and mirror with the scan. Weights and
  * m(g) come from a vtkErrorDiffusionParameterTable.
  *
- * Threshold: t = 0.5 + s * r * m(g) with r uniform in [0, 1) from a seeded
- * PCG32 generator and s the ModulationScale (s = 1 is the paper's Eq. 1;
- * s = 0.5 is Zhou and Fang's 0..255 code). For g > 0.5 the whole process is
+ * Threshold: t = 0.5 + s * r * m(g) (shifted in the steady-state mode, see
+ * below) with r uniform in [0, 1) from a seeded PCG32 generator and s the
+ * ModulationScale (s = 1 is the paper's Eq. 1; s = 0.5, the default, is Zhou
+ * and Fang's 0..255 code). For g > 0.5 the whole process is
  * mirrored: t = 0.5 - s * r * m(1 - g), so the pattern at density g is the
  * complement of the pattern at 1 - g given the same random numbers (the
  * paper's "the minority voxels of g and 1 - g are alike").
@@ -33,20 +34,31 @@
  * sampled; both absorb the error that reaches them, so an empty region stays
  * empty and error does not leak across it.
  *
- * Boundaries (the count N = sum of g is kept in expectation either way):
- * - BOUNDARY_RENORMALIZE (the paper-faithful behaviour): at every face the
- *   weights of the targets that exist are renormalised to sum 1, and the scan
- *   starts with no accumulated error. The count is exact, but the first layers
- *   come out empty (the error buffer must charge first) and the last layer
- *   receives all the error that the volume still carries.
- * - BOUNDARY_STEADY_STATE (default): the scan starts as if it had been
- *   running. WarmUpLayers virtual layers with the first layer's density are
- *   processed first (their samples are discarded) so the error buffer
- *   entering layer 0 has its steady-state charge; at the end, the error the
- *   last layer passes on to the next one leaves the volume, like it would in
- *   the interior. What enters equals what leaves in expectation, so the
- *   count stays N = sum g in expectation. The lateral faces renormalise like
- *   the paper-faithful mode.
+ * Boundaries and start-up (the count N = sum of g is kept in expectation):
+ * - BOUNDARY_RENORMALIZE, the paper-faithful behaviour: the threshold is the
+ *   paper's, the scan starts with no accumulated error, and at every face the
+ *   weights of the targets that exist are renormalised to sum 1. The count
+ *   is exact, but the error must first charge up to its steady-state level C
+ *   (the first layers come out empty) and the last layer receives all the
+ *   charge the volume still carries (several times its density). On a 64^3
+ *   cube the whole-volume mean anisotropy is 7 to 9 dB against about 0 dB for
+ *   the interior.
+ * - BOUNDARY_STEADY_STATE (default): the threshold is lowered by the
+ *   steady-state charge, t = 0.5 - C(g) + s * r * m(g) (mirrored above 0.5),
+ *   where C(g) is the mean error a voxel receives once the paper's process
+ *   has settled at density g (calibrated per key level, see
+ *   GetSteadyStateCharges, and interpolated like the other parameters). This
+ *   only translates the error by C: the settled process makes the same
+ *   decisions, but an empty buffer is now its mean state, so no charging is
+ *   needed, a rise of density along the scan is followed at once, and error
+ *   leaving the volume or absorbed by empty voxels has zero mean. WarmUpLayers
+ *   virtual layers with the first layer's density then settle the buffers'
+ *   fluctuations, and the error the last layer passes on leaves the volume.
+ *   Lateral faces renormalise as above. Whole-volume and interior mean
+ *   anisotropy agree within 0.15 dB at every key level from 8/255 (128^3).
+ *   Caveat: a region that starts after empty voxels (importance sampling)
+ *   has no warm-up; at g = 0.01 its first layers hold about 2% too few
+ *   samples.
  */
 #ifndef vtkErrorDiffusionKernel_h
 #define vtkErrorDiffusionKernel_h
@@ -148,7 +160,7 @@ private:
   float ChargeAt(float g) const;
 
   vtkErrorDiffusionParameterTable Table;
-  double ModulationScale = 1.0;
+  double ModulationScale = 0.5;
   std::uint64_t Seed = 0;
   int BoundaryMode = BOUNDARY_STEADY_STATE;
   int WarmUpLayers = 8;
