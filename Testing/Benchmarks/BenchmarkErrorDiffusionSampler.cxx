@@ -1,0 +1,76 @@
+// Sampling speed: the kernel alone and the whole VTK filter, on constant
+// cubes of 128^3 and 256^3 at g = 8/255 and 127/255. Prints voxels/s and
+// samples/s (counters), no thresholds.
+#include "vtkErrorDiffusionKernel.h"
+#include "vtkErrorDiffusionSampler.h"
+#include "vtkFloatArray.h"
+#include "vtkImageData.h"
+#include "vtkNew.h"
+#include "vtkPointData.h"
+#include "vtkPolyData.h"
+
+#include <benchmark/benchmark.h>
+
+#include <vector>
+
+namespace
+{
+void SetCounters(benchmark::State& state, double voxels, double samples)
+{
+  state.counters["voxels/s"] =
+    benchmark::Counter(voxels, benchmark::Counter::kIsIterationInvariantRate);
+  state.counters["samples/s"] =
+    benchmark::Counter(samples, benchmark::Counter::kIsIterationInvariantRate);
+  state.counters["samples"] = samples;
+}
+
+void BM_Kernel(benchmark::State& state)
+{
+  const int L = static_cast<int>(state.range(0));
+  const float g = static_cast<float>(state.range(1)) / 255.0f;
+  const size_t layer = static_cast<size_t>(L) * L;
+  std::vector<float> density(layer, g);
+  std::vector<unsigned char> mask(layer);
+  vtkIdType samples = 0;
+  for (auto _ : state)
+  {
+    vtkErrorDiffusionKernel kernel;
+    kernel.Begin(L, L, L);
+    samples = 0;
+    for (int z = 0; z < L; ++z)
+    {
+      samples += kernel.ProcessLayer(density.data(), mask.data());
+    }
+    benchmark::DoNotOptimize(samples);
+  }
+  SetCounters(state, static_cast<double>(layer) * L, static_cast<double>(samples));
+}
+
+void BM_Filter(benchmark::State& state)
+{
+  const int L = static_cast<int>(state.range(0));
+  const float g = static_cast<float>(state.range(1)) / 255.0f;
+  vtkNew<vtkImageData> image;
+  image->SetDimensions(L, L, L);
+  vtkNew<vtkFloatArray> values;
+  values->SetName("density");
+  values->SetNumberOfValues(static_cast<vtkIdType>(L) * L * L);
+  values->Fill(g);
+  image->GetPointData()->SetScalars(values);
+  vtkNew<vtkErrorDiffusionSampler> sampler;
+  sampler->SetInputData(image);
+  sampler->SetDensityMappingToIdentity();
+  vtkIdType samples = 0;
+  for (auto _ : state)
+  {
+    sampler->Modified();
+    sampler->Update();
+    samples = sampler->GetOutput()->GetNumberOfPoints();
+  }
+  SetCounters(state, static_cast<double>(L) * L * L, static_cast<double>(samples));
+}
+}
+
+BENCHMARK(BM_Kernel)->Args({ 128, 8 })->Args({ 128, 127 })->Args({ 256, 8 })->Args({ 256, 127 })->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_Filter)->Args({ 128, 8 })->Args({ 128, 127 })->Args({ 256, 8 })->Args({ 256, 127 })->Unit(benchmark::kMillisecond);
+BENCHMARK_MAIN();
