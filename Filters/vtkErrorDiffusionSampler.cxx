@@ -8,8 +8,6 @@
 #include "vtkErrorDiffusionParameterTable.h"
 #include "vtkFieldData.h"
 #include "vtkFloatArray.h"
-#include "vtkIdList.h"
-#include "vtkIdTypeArray.h"
 #include "vtkImageData.h"
 #include "vtkInformation.h"
 #include "vtkInformationVector.h"
@@ -21,6 +19,8 @@
 #include "vtkPoints.h"
 #include "vtkPolyData.h"
 #include "vtkSMPTools.h"
+#include "vtkTypeInt32Array.h"
+#include "vtkTypeInt64Array.h"
 #include "vtkStreamingDemandDrivenPipeline.h"
 #include "vtkUnsignedCharArray.h"
 #include "vtkVersionMacros.h"
@@ -28,6 +28,7 @@
 #include <algorithm>
 #include <cmath>
 #include <numeric>
+#include <type_traits>
 #include <vector>
 
 vtkStandardNewMacro(vtkErrorDiffusionSampler);
@@ -106,6 +107,103 @@ void FillLayerDensity(vtkDataArray* array, vtkIdType begin, vtkIdType end, int c
   if (!vtkArrayDispatch::Dispatch::Execute(array, worker, begin, end, component, map, out))
   {
     worker(array, begin, end, component, map, out);
+  }
+}
+
+// Voxel ids (relative to `extent`) to world coordinates, x y z interleaved.
+template <typename T>
+void WriteVoxelCentres(
+  const std::vector<vtkIdType>& ids, const int extent[6], const double m[16], T* xyz)
+{
+  const vtkIdType nx = extent[1] - extent[0] + 1;
+  const vtkIdType nxy = nx * (extent[3] - extent[2] + 1);
+  vtkSMPTools::For(0, static_cast<vtkIdType>(ids.size()), [&](vtkIdType begin, vtkIdType end) {
+    for (vtkIdType p = begin; p < end; ++p)
+    {
+      const vtkIdType id = ids[p];
+      const double i = static_cast<double>(extent[0] + id % nx);
+      const double j = static_cast<double>(extent[2] + (id % nxy) / nx);
+      const double k = static_cast<double>(extent[4] + id / nxy);
+      for (int r = 0; r < 3; ++r)
+      {
+        xyz[3 * p + r] =
+          static_cast<T>(m[4 * r] * i + m[4 * r + 1] * j + m[4 * r + 2] * k + m[4 * r + 3]);
+      }
+    }
+  });
+}
+
+// One vertex cell per point; 32-bit storage when it fits, to halve the memory.
+vtkSmartPointer<vtkCellArray> MakeVertices(vtkIdType n)
+{
+  auto verts = vtkSmartPointer<vtkCellArray>::New();
+  auto fill = [n, &verts](auto offsets, auto connectivity) {
+    using ValueT = typename std::remove_reference<decltype(*offsets->GetPointer(0))>::type;
+    offsets->SetNumberOfValues(n + 1);
+    connectivity->SetNumberOfValues(n);
+    std::iota(offsets->GetPointer(0), offsets->GetPointer(0) + n + 1, ValueT(0));
+    std::iota(connectivity->GetPointer(0), connectivity->GetPointer(0) + n, ValueT(0));
+    verts->SetData(offsets, connectivity);
+  };
+  if (n < VTK_TYPE_INT32_MAX)
+  {
+    fill(vtkSmartPointer<vtkTypeInt32Array>::New(), vtkSmartPointer<vtkTypeInt32Array>::New());
+  }
+  else
+  {
+    fill(vtkSmartPointer<vtkTypeInt64Array>::New(), vtkSmartPointer<vtkTypeInt64Array>::New());
+  }
+  return verts;
+}
+
+// out[p] = in[ids[p]] for every tuple.
+struct GatherWorker
+{
+  template <typename InArrayT, typename OutArrayT>
+  void operator()(InArrayT* in, OutArrayT* out, const std::vector<vtkIdType>& ids) const
+  {
+    const auto src = vtk::DataArrayTupleRange(in);
+    auto dst = vtk::DataArrayTupleRange(out);
+    const vtkIdType n = static_cast<vtkIdType>(ids.size());
+    vtkSMPTools::For(0, n, [&](vtkIdType begin, vtkIdType end) {
+      for (vtkIdType p = begin; p < end; ++p)
+      {
+        dst[p] = src[ids[p]];
+      }
+    });
+  }
+};
+
+// Copies every array that CopyAllocate set up, for the sampled voxels.
+void GatherAttributes(
+  vtkDataSetAttributes* in, vtkDataSetAttributes* out, const std::vector<vtkIdType>& ids)
+{
+  const vtkIdType n = static_cast<vtkIdType>(ids.size());
+  for (int a = 0; a < out->GetNumberOfArrays(); ++a)
+  {
+    vtkAbstractArray* target = out->GetAbstractArray(a);
+    vtkAbstractArray* source = in->GetAbstractArray(target->GetName());
+    if (!source)
+    {
+      continue;
+    }
+    target->SetNumberOfTuples(n);
+    auto* sourceData = vtkDataArray::SafeDownCast(source);
+    auto* targetData = vtkDataArray::SafeDownCast(target);
+    if (sourceData && targetData)
+    {
+      using Dispatcher = vtkArrayDispatch::Dispatch2SameValueType;
+      GatherWorker worker;
+      if (!Dispatcher::Execute(sourceData, targetData, worker, ids))
+      {
+        worker(sourceData, targetData, ids);
+      }
+      continue;
+    }
+    for (vtkIdType p = 0; p < n; ++p) // strings and other non-numeric arrays
+    {
+      target->SetTuple(p, ids[p], source);
+    }
   }
 }
 
@@ -394,50 +492,28 @@ int vtkErrorDiffusionSampler::RequestData(
   vtkImageData::ComputeIndexToPhysicalMatrix(input->GetOrigin(), input->GetSpacing(),
     input->GetDirectionMatrix()->GetData(), indexToPhysical);
   vtkNew<vtkPoints> points;
-  points->SetDataType(
-    this->OutputPointsPrecision == DOUBLE_PRECISION ? VTK_DOUBLE : VTK_FLOAT);
-  points->SetNumberOfPoints(n);
-  vtkDataArray* coordinates = points->GetData();
-  vtkSMPTools::For(0, n, [&](vtkIdType begin, vtkIdType end) {
-    for (vtkIdType p = begin; p < end; ++p)
-    {
-      const vtkIdType id = sampleIds[p];
-      const double ijk[3] = { static_cast<double>(extent[0] + id % nx),
-        static_cast<double>(extent[2] + (id / nx) % ny),
-        static_cast<double>(extent[4] + id / layerSize) };
-      double xyz[3];
-      for (int r = 0; r < 3; ++r)
-      {
-        xyz[r] = indexToPhysical[4 * r] * ijk[0] + indexToPhysical[4 * r + 1] * ijk[1] +
-          indexToPhysical[4 * r + 2] * ijk[2] + indexToPhysical[4 * r + 3];
-      }
-      coordinates->SetTuple(p, xyz);
-    }
-  });
+  if (this->OutputPointsPrecision == DOUBLE_PRECISION)
+  {
+    points->SetDataType(VTK_DOUBLE);
+    points->SetNumberOfPoints(n);
+    WriteVoxelCentres(sampleIds, extent, indexToPhysical,
+      vtkDoubleArray::SafeDownCast(points->GetData())->GetPointer(0));
+  }
+  else
+  {
+    points->SetDataType(VTK_FLOAT);
+    points->SetNumberOfPoints(n);
+    WriteVoxelCentres(sampleIds, extent, indexToPhysical,
+      vtkFloatArray::SafeDownCast(points->GetData())->GetPointer(0));
+  }
   output->SetPoints(points);
-
-  vtkNew<vtkIdTypeArray> offsets;
-  offsets->SetNumberOfValues(n + 1);
-  std::iota(offsets->GetPointer(0), offsets->GetPointer(0) + n + 1, vtkIdType(0));
-  vtkNew<vtkIdTypeArray> connectivity;
-  connectivity->SetNumberOfValues(n);
-  std::iota(connectivity->GetPointer(0), connectivity->GetPointer(0) + n, vtkIdType(0));
-  vtkNew<vtkCellArray> verts;
-  verts->SetData(offsets, connectivity);
-  output->SetVerts(verts);
+  output->SetVerts(MakeVertices(n));
 
   // --- Attributes of the sampled voxels.
   vtkPointData* inPD = input->GetPointData();
   vtkPointData* outPD = output->GetPointData();
   outPD->CopyAllocate(inPD, n);
-  vtkNew<vtkIdList> fromIds;
-  fromIds->SetNumberOfIds(n);
-  std::copy(sampleIds.begin(), sampleIds.end(), fromIds->GetPointer(0));
-  vtkNew<vtkIdList> toIds;
-  toIds->SetNumberOfIds(n);
-  std::iota(toIds->GetPointer(0), toIds->GetPointer(0) + n, vtkIdType(0));
-  outPD->CopyData(inPD, fromIds, toIds);
-  outPD->Squeeze();
+  GatherAttributes(inPD, outPD, sampleIds);
 
   vtkNew<vtkFloatArray> densityArray;
   densityArray->SetName("Density");
