@@ -89,6 +89,7 @@ struct Realisation
   SignalKind Kind = SignalKind::Points;
   vtkDataArray* Array = nullptr;
   bool CellArray = false;
+  bool GridFromBounds = false; // rule 3: the grid is built over the bounds
   AnalysisGrid Grid;
 };
 
@@ -180,23 +181,21 @@ bool GridFromFieldData(vtkFieldData* fd, AnalysisGrid& grid, bool& found, std::s
   return true;
 }
 
-// The input array of an image realisation, one component, one value per
-// point or cell.
-vtkDataArray* ImageArray(vtkAlgorithm* self, vtkImageData* image, bool& cells, std::string& error)
+// Checks the input array of an image realisation: one component of point or
+// cell data.
+bool CheckImageArray(vtkDataArray* array, int association, bool& cells, std::string& error)
 {
-  int association = vtkDataObject::FIELD_ASSOCIATION_POINTS;
-  vtkDataArray* array = self->GetInputArrayToProcess(0, image, association);
   if (!array)
   {
     error = "no input array: select a point- or cell-data array with SetInputArrayToProcess "
             "(default: the active point scalars)";
-    return nullptr;
+    return false;
   }
   cells = (association == vtkDataObject::FIELD_ASSOCIATION_CELLS);
   if (!cells && association != vtkDataObject::FIELD_ASSOCIATION_POINTS)
   {
     error = "the input array must be point or cell data";
-    return nullptr;
+    return false;
   }
   if (array->GetNumberOfComponents() != 1)
   {
@@ -204,9 +203,9 @@ vtkDataArray* ImageArray(vtkAlgorithm* self, vtkImageData* image, bool& cells, s
     msg << "the input array '" << (array->GetName() ? array->GetName() : "")
         << "' has " << array->GetNumberOfComponents() << " components; counts need one";
     error = msg.str();
-    return nullptr;
+    return false;
   }
-  return array;
+  return true;
 }
 
 void AddFieldValue(vtkFieldData* fd, const char* name, double value)
@@ -407,10 +406,19 @@ int vtkBlueNoiseSpectrum::RequestData(
     auto image = vtkImageData::SafeDownCast(r.Data);
     if (image)
     {
-      r.Array = ImageArray(this, image, r.CellArray, error);
-      if (!r.Array)
+      int association = vtkDataObject::FIELD_ASSOCIATION_POINTS;
+      r.Array = this->GetInputArrayToProcess(0, image, association);
+      if (!CheckImageArray(r.Array, association, r.CellArray, error))
       {
         vtkErrorMacro("Realisation " << i << ": " << error << ".");
+        return 0;
+      }
+      const vtkIdType expected = r.CellArray ? image->GetNumberOfCells() : image->GetNumberOfPoints();
+      if (r.Array->GetNumberOfTuples() != expected)
+      {
+        vtkErrorMacro("Realisation " << i << ": the input array has "
+                                     << r.Array->GetNumberOfTuples() << " values for "
+                                     << expected << (r.CellArray ? " cells." : " points."));
         return 0;
       }
     }
@@ -423,13 +431,6 @@ int vtkBlueNoiseSpectrum::RequestData(
       for (int a = 0; a < 3; ++a)
       {
         r.Grid.Dimensions[a] = r.CellArray ? std::max(1, dims[a] - 1) : dims[a];
-      }
-      if (r.Array->GetNumberOfTuples() != static_cast<vtkIdType>(r.Grid.Size()))
-      {
-        vtkErrorMacro("Realisation " << i << ": the input array has "
-                                     << r.Array->GetNumberOfTuples() << " values for a grid of "
-                                     << r.Grid.Size() << " voxels.");
-        return 0;
       }
     }
     else if (this->UseInputGrid &&
@@ -445,6 +446,7 @@ int vtkBlueNoiseSpectrum::RequestData(
     else
     {
       r.Kind = image ? SignalKind::WeightedPoints : SignalKind::Points;
+      r.GridFromBounds = true;
       needBounds = true;
     }
   }
@@ -461,7 +463,7 @@ int vtkBlueNoiseSpectrum::RequestData(
     {
       for (const Realisation& r : realisations)
       {
-        if (r.Kind == SignalKind::ImageArray || r.Grid.Dimensions[0] > 0)
+        if (!r.GridFromBounds)
         {
           continue;
         }
@@ -501,7 +503,7 @@ int vtkBlueNoiseSpectrum::RequestData(
     }
     for (Realisation& r : realisations)
     {
-      if (r.Kind != SignalKind::ImageArray && r.Grid.Dimensions[0] == 0)
+      if (r.GridFromBounds)
       {
         r.Grid = grid;
       }
@@ -591,16 +593,25 @@ int vtkBlueNoiseSpectrum::RequestData(
       }
       else
       {
+        // Values at the image's points, or at its cell centres (half a voxel
+        // in, except along a flat axis of a 2D image).
         auto source = vtkImageData::SafeDownCast(r.Data);
         int extent[6];
         source->GetExtent(extent);
-        const int shift = r.CellArray ? 1 : 0;
-        vtkIdType id = 0;
-        for (int k = extent[4]; k <= std::max(extent[4], extent[5] - shift); ++k)
+        int last[3];
+        double offset[3];
+        for (int a = 0; a < 3; ++a)
         {
-          for (int j = extent[2]; j <= std::max(extent[2], extent[3] - shift); ++j)
+          const bool flat = extent[2 * a + 1] == extent[2 * a];
+          last[a] = (r.CellArray && !flat) ? extent[2 * a + 1] - 1 : extent[2 * a + 1];
+          offset[a] = (r.CellArray && !flat) ? 0.5 : 0.0;
+        }
+        vtkIdType id = 0;
+        for (int k = extent[4]; k <= last[2]; ++k)
+        {
+          for (int j = extent[2]; j <= last[1]; ++j)
           {
-            for (int i2 = extent[0]; i2 <= std::max(extent[0], extent[1] - shift); ++i2, ++id)
+            for (int ii = extent[0]; ii <= last[0]; ++ii, ++id)
             {
               const double w = r.Array->GetComponent(id, 0);
               if (!(w >= 0.0 && w <= VTK_FLOAT_MAX))
@@ -613,10 +624,9 @@ int vtkBlueNoiseSpectrum::RequestData(
               {
                 continue;
               }
-              const double half = r.CellArray ? 0.5 : 0.0;
-              // Degenerate (2D) cell axes have their single layer at offset 0.
-              source->TransformContinuousIndexToPhysicalPoint(i2 + (extent[1] > extent[0] ? half : 0.0),
-                j + (extent[3] > extent[2] ? half : 0.0), k + (extent[5] > extent[4] ? half : 0.0), p);
+              ++binned;
+              source->TransformContinuousIndexToPhysicalPoint(
+                ii + offset[0], j + offset[1], k + offset[2], p);
               const long long index = r.Grid.Locate(p);
               if (index < 0)
               {
@@ -627,7 +637,6 @@ int vtkBlueNoiseSpectrum::RequestData(
             }
           }
         }
-        binned += id;
       }
       ok = kernel.AddRealisation(counts.data(), &error);
     }

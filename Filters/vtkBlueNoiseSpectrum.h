@@ -135,6 +135,9 @@ public:
   /// Output port 1: the centred power spectrum.
   vtkImageData* GetSpectrumImageOutput();
 
+  /// Add one more realisation (a new connection on the repeatable input port).
+  void AddInputData(vtkDataObject* input) { this->AddInputDataObject(0, input); }
+
 protected:
   vtkBlueNoiseSpectrum();
   ~vtkBlueNoiseSpectrum() override;

@@ -396,6 +396,10 @@ bool vtkBlueNoiseSpectrumKernel::Compute(Result& out, std::string* error) const
   const double meanPoints = this->PointSum / this->Realisations;
   const double density = meanPoints / voxels;
   const double fg = PrincipalFrequency(density);
+  // |f| < f_g = cbrt(h) is tested as |f|^6 < h^2: cbrt is not correctly
+  // rounded (cbrt(2^-9) < 1/8 in glibc), the cubes are exact on dyadic grids.
+  const double h = density <= 0.5 ? density : std::max(0.0, 1.0 - density);
+  const double h2 = h * h;
 
   vtkSMPThreadLocal<Accumulator> locals;
   const double* power = this->PowerSum;
@@ -421,8 +425,8 @@ bool vtkBlueNoiseSpectrumKernel::Compute(Result& out, std::string* error) const
       const double* p = power + row * halfX;
       for (int x = (row == 0) ? 1 : 0; x < halfX; ++x)
       {
-        const double fr = std::sqrt(yz2 + ax.Frequency2[x]);
-        ShellSums& s = shells[static_cast<int>(fr * lmin + 0.5)];
+        const double f2 = yz2 + ax.Frequency2[x];
+        ShellSums& s = shells[static_cast<int>(std::sqrt(f2) * lmin + 0.5)];
         const int w = (x == 0 || (evenX && x == halfX - 1)) ? 1 : 2;
         const double v = p[x];
         const double wv = w * v;
@@ -433,7 +437,7 @@ bool vtkBlueNoiseSpectrumKernel::Compute(Result& out, std::string* error) const
         s.SegmentSum[segment] += wv;
         s.SegmentCount[segment] += w;
         total += wv;
-        if (fr < fg)
+        if (f2 * f2 * f2 < h2)
         {
           low += wv;
         }
@@ -510,6 +514,8 @@ bool vtkBlueNoiseSpectrumKernel::Compute(Result& out, std::string* error) const
   const int lastCorrelated = std::min(maxShell, lmin / 2);
   for (int n = 1; n <= lastCorrelated; ++n)
   {
+    // Up to Lmin / 2 every axis reaches every shell, so no segment is empty
+    // there on any grid; the test keeps empty segments out should that change.
     const ShellSums& s = sum.Shells[n];
     if (s.SegmentCount[0] > 0 && s.SegmentCount[1] > 0 && s.SegmentCount[2] > 0)
     {

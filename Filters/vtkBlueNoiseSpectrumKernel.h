@@ -18,8 +18,8 @@
  *   folded into [-L/2, L/2).
  * - Radial shells. Lmin = min(Lx, Ly, Lz); a frequency lies on shell
  *   n = floor(Lmin * |f| + 0.5), evaluated in double precision as
- *   Lmin * sqrt((kx/Lx)^2 + (ky/Ly)^2 + (kz/Lz)^2) (for cubic grids this is
- *   round(|k|), which never ties). Shell n has frequency n / Lmin. Shells
+ *   sqrt(((kz/Lz)^2 + (ky/Ly)^2) + (kx/Lx)^2) * Lmin (for cubic grids this is
+ *   round(|k|), which never ties; on other grids an exact half goes up). Shell n has frequency n / Lmin. Shells
  *   1 .. nmax are reported, nmax being the shell of the grid's corner frequency;
  *   shell 0 holds only DC and is left out.
  * - Per shell (Eq. 2-4): RadialPower = mean of P over the shell; Anisotropy =
@@ -32,8 +32,11 @@
  * - Principal frequency (Eq. 6): f_g = cbrt(g) for g <= 0.5, cbrt(1 - g) above
  *   (0 when g >= 1, which only count volumes can exceed).
  * - Low-frequency ratio (Eq. 7): L = sum of P over 0 < |f| < f_g divided by the
- *   sum of P over all 0 < |f| (|f| exact, not rounded to shells); L = 0 when
- *   there is no power off DC.
+ *   sum of P over all 0 < |f| (|f| itself, not rounded to shells); L = 0 when
+ *   there is no power off DC. With h = g (or 1 - g above 0.5), |f| < f_g is
+ *   evaluated as |f|^6 < h^2, |f|^2 summed as (fz^2 + fy^2) + fx^2 in double
+ *   precision: frequencies exactly on f_g (e.g. |f| = 1/8 for one point in
+ *   8^3) are left out, which cbrt's rounding could not guarantee.
  * - Segmented spectra (Eq. 8-10): with the components folded to |fx|, |fy|,
  *   |fz|, SrapsXY is the shell mean of P over frequencies where |fz| is the
  *   largest component, SrapsXZ where |fy| is, SrapsYZ where |fx| is. Ties go to

@@ -1,0 +1,1 @@
+bluenoise_add_benchmark(BenchmarkSpectrum)

@@ -1,0 +1,9 @@
+# Tests of the 3D blue-noise spectrum metric (vtkBlueNoiseSpectrumKernel and
+# the vtkBlueNoiseSpectrum filter).
+bluenoise_add_test(TestBlueNoiseSpectrumSinglePoint LABELS spectrum)
+bluenoise_add_test(TestBlueNoiseSpectrumLattice LABELS spectrum)
+bluenoise_add_test(TestBlueNoiseSpectrumWhiteNoise LABELS spectrum TIMEOUT 300)
+bluenoise_add_test(TestBlueNoiseSpectrumParseval LABELS spectrum)
+bluenoise_add_test(TestBlueNoiseSpectrumDirectDFT LABELS spectrum TIMEOUT 300)
+bluenoise_add_test(TestBlueNoiseSpectrumEdgeCases LABELS spectrum)
+bluenoise_add_test(TestBlueNoiseSpectrumPipeline LABELS spectrum)

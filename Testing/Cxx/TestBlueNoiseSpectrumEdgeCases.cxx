@@ -1,0 +1,327 @@
+// Edge cases of the kernel and the filter: a non-cubic grid, bad input (clear
+// errors, empty outputs, unchanged state), a single point through the filter
+// and a full mask (g = 1: a warning, no NaN anywhere).
+#include "TestBlueNoiseSpectrumUtilities.h"
+
+#include "vtkBlueNoiseSpectrum.h"
+#include "vtkDoubleArray.h"
+#include "vtkExecutive.h"
+#include "vtkFloatArray.h"
+#include "vtkImageData.h"
+#include "vtkMultiBlockDataSet.h"
+#include "vtkNew.h"
+#include "vtkPointData.h"
+#include "vtkPoints.h"
+#include "vtkPolyData.h"
+#include "vtkUnsignedCharArray.h"
+
+#include <cmath>
+#include <limits>
+
+using namespace spectrum_test;
+using bluenoise_test::MessageObserver;
+
+namespace
+{
+void NonCubicWhiteNoise(std::mt19937& rng)
+{
+  const int dims[3] = { 32, 48, 64 };
+  const double g = 0.2;
+  const std::string what = "white noise on 32x48x64";
+  const std::vector<unsigned char> mask = RandomMask(dims, g, rng);
+  Result r;
+  std::string error;
+  if (!Check(vtkBlueNoiseSpectrumKernel::Evaluate(mask.data(), dims, 0.02, r, &error),
+        what + ": " + error))
+  {
+    return;
+  }
+  CheckFinite(r, what);
+  // Shells are 1 / Lmin wide; the corner (1/2, 1/2, 1/2) lies on shell
+  // round(32 sqrt(3) / 2) = 28.
+  Check(r.RadialPower.size() == 28, what + ": " + Str(r.RadialPower.size()) + " shells");
+  for (std::size_t i = 0; i < r.Frequency.size(); ++i)
+  {
+    Check(r.Frequency[i] == (i + 1) / 32.0, what + ": frequency of shell " + Str(i + 1));
+  }
+  Check(TotalCount(r) == 32 * 48 * 64 - 1, what + ": shell counts add up to " + Str(TotalCount(r)));
+  double meanDB = 0.0;
+  for (std::size_t i = 3; i < r.RadialPower.size(); ++i)
+  {
+    const double tolerance = std::max(0.05, 4.0 / std::sqrt(r.ShellCount[i] / 2.0));
+    if (r.ShellCount[i] >= 1000 || i < 16)
+    {
+      Check(std::abs(r.RadialPower[i] / (1.0 - g) - 1.0) <= tolerance,
+        what + " shell " + Str(i + 1) + ": power " + Str(r.RadialPower[i]));
+    }
+    if (i < 16)
+    {
+      meanDB += r.AnisotropyDB[i] / 13.0;
+    }
+  }
+  Check(std::abs(meanDB) < 0.5, what + ": mean anisotropy " + Str(meanDB) + " dB");
+}
+
+void KernelErrors()
+{
+  vtkBlueNoiseSpectrumKernel kernel;
+  std::string error;
+  Result r;
+  std::vector<unsigned char> zeros(8 * 8 * 8, 0);
+  Check(!kernel.AddRealisation(zeros.data(), &error) && error.find("not set") != std::string::npos,
+    "AddRealisation without dimensions: '" + error + "'");
+  Check(!kernel.SetDimensions(1, 8, 8, &error) && error.find("at least 2") != std::string::npos,
+    "SetDimensions(1, 8, 8): '" + error + "'");
+  Check(kernel.SetDimensions(8, 8, 8, &error), "SetDimensions(8, 8, 8): " + error);
+  Check(!kernel.Compute(r, &error) && error.find("no realisation") != std::string::npos,
+    "Compute without realisations: '" + error + "'");
+  Check(!kernel.AddRealisation(zeros.data(), &error) && error.find("N = 0") != std::string::npos,
+    "empty mask: '" + error + "'");
+
+  // A good realisation, then bad ones that must not change the result.
+  std::vector<float> counts(8 * 8 * 8, 0.0f);
+  counts[3] = 1.0f;
+  counts[100] = 2.5f;
+  Check(kernel.AddRealisation(counts.data(), &error), "good counts: " + error);
+  Result before;
+  kernel.Compute(before);
+  std::vector<float> bad = counts;
+  bad[17] = -1.0f;
+  Check(!kernel.AddRealisation(bad.data(), &error) &&
+      error.find("finite and non-negative") != std::string::npos,
+    "negative count: '" + error + "'");
+  bad[17] = std::numeric_limits<float>::quiet_NaN();
+  Check(!kernel.AddRealisation(bad.data(), &error) &&
+      error.find("(1, 2, 0)") != std::string::npos,
+    "NaN count names its voxel: '" + error + "'");
+  bad[17] = std::numeric_limits<float>::infinity();
+  Check(!kernel.AddRealisation(bad.data(), &error), "infinite count accepted");
+  Check(kernel.GetNumberOfRealisations() == 1,
+    "rejected realisations were counted: " + Str(kernel.GetNumberOfRealisations()));
+  Result after;
+  kernel.Compute(after);
+  CheckSameResult(after, before, 0.0, "after rejected realisations");
+
+  kernel.SetWeight(2.0);
+  Check(kernel.GetWeight() == 1.0, "weight not clamped to 1: " + Str(kernel.GetWeight()));
+  kernel.SetWeight(-1.0);
+  Check(kernel.GetWeight() == 0.0, "weight not clamped to 0: " + Str(kernel.GetWeight()));
+
+  // Reset keeps the shape.
+  kernel.Reset();
+  Check(kernel.GetNumberOfRealisations() == 0, "Reset kept realisations");
+  Check(kernel.AddRealisation(counts.data(), &error), "after Reset: " + error);
+}
+
+void FullMask(std::mt19937& rng)
+{
+  const int dims[3] = { 16, 16, 16 };
+  const std::vector<unsigned char> ones(Voxels(dims), 1);
+  Result r;
+  std::string error;
+  if (!Check(vtkBlueNoiseSpectrumKernel::Evaluate(ones.data(), dims, 0.02, r, &error),
+        "full mask: " + error))
+  {
+    return;
+  }
+  CheckFinite(r, "full mask");
+  Check(!r.Warning.empty(), "full mask: no warning");
+  Check(r.Density == 1.0, "full mask: g = " + Str(r.Density));
+  Check(r.LowFrequencyRatio == 0.0, "full mask: L = " + Str(r.LowFrequencyRatio));
+  Check(r.SymmetryCorrelation == 0.0 && r.Symmetry == 1.0,
+    "full mask: C = " + Str(r.SymmetryCorrelation) + ", S = " + Str(r.Symmetry));
+  CheckClose(r.TargetValue, 0.98, 1e-15, "full mask T");
+  for (std::size_t i = 0; i < r.RadialPower.size(); ++i)
+  {
+    Check(r.RadialPower[i] == 0.0 && r.Anisotropy[i] == 0.0 && r.AnisotropyDB[i] == -300.0,
+      "full mask shell " + Str(i + 1) + ": power " + Str(r.RadialPower[i]) + ", anisotropy " +
+        Str(r.Anisotropy[i]) + " (" + Str(r.AnisotropyDB[i]) + " dB)");
+  }
+
+  // A constant realisation contributes exactly zero to the average.
+  vtkBlueNoiseSpectrumKernel kernel;
+  kernel.SetDimensions(16, 16, 16);
+  const std::vector<unsigned char> noise = RandomMask(dims, 0.2, rng);
+  const std::vector<float> threes(Voxels(dims), 3.0f);
+  kernel.AddRealisation(noise.data());
+  Result single;
+  kernel.Compute(single);
+  kernel.AddRealisation(threes.data());
+  Result mixed;
+  kernel.Compute(mixed);
+  Check(mixed.Warning.empty(), "mixed realisations: unexpected warning");
+  for (std::size_t i = 0; i < mixed.RadialPower.size(); ++i)
+  {
+    CheckClose(mixed.RadialPower[i], single.RadialPower[i] / 2, 1e-14,
+      "constant + noise shell " + Str(i + 1));
+  }
+}
+
+// Table, field data and image of the filter all empty.
+bool OutputsEmpty(vtkBlueNoiseSpectrum* filter)
+{
+  vtkTable* table = filter->GetOutput();
+  vtkImageData* image = filter->GetSpectrumImageOutput();
+  return table->GetNumberOfColumns() == 0 && table->GetNumberOfRows() == 0 &&
+    table->GetFieldData()->GetNumberOfArrays() == 0 && image->GetNumberOfPoints() == 0;
+}
+
+void ExpectFilterError(vtkDataObject* input, const std::string& expected, const std::string& what)
+{
+  vtkNew<vtkBlueNoiseSpectrum> filter;
+  vtkNew<MessageObserver> observer;
+  observer->Watch(filter);
+  observer->Watch(filter->GetExecutive());
+  filter->SetInputData(input);
+  filter->Update();
+  Check(observer->ErrorContains(expected),
+    what + ": expected an error with '" + expected + "', got '" + observer->Errors + "'");
+  Check(OutputsEmpty(filter), what + ": outputs not empty");
+}
+
+vtkSmartPointer<vtkImageData> MaskImage(const int dims[3], vtkDataArray* values)
+{
+  auto image = vtkSmartPointer<vtkImageData>::New();
+  image->SetDimensions(dims[0], dims[1], dims[2]);
+  image->GetPointData()->SetScalars(values);
+  return image;
+}
+
+void FilterErrors()
+{
+  vtkNew<vtkPolyData> empty;
+  ExpectFilterError(empty, "has no points", "empty poly data");
+
+  vtkNew<vtkMultiBlockDataSet> noBlocks;
+  ExpectFilterError(noBlocks, "has no realisation", "empty multiblock");
+
+  const int dims[3] = { 8, 8, 8 };
+  vtkNew<vtkFloatArray> withNaN;
+  withNaN->SetNumberOfValues(512);
+  withNaN->FillValue(1.0f);
+  withNaN->SetValue(5, std::numeric_limits<float>::quiet_NaN());
+  ExpectFilterError(MaskImage(dims, withNaN), "finite and non-negative", "NaN in an image");
+
+  vtkNew<vtkDoubleArray> twoComponents;
+  twoComponents->SetNumberOfComponents(2);
+  twoComponents->SetNumberOfTuples(512);
+  twoComponents->Fill(1.0);
+  ExpectFilterError(MaskImage(dims, twoComponents), "components", "two-component array");
+
+  const int flat[3] = { 8, 8, 1 };
+  vtkNew<vtkUnsignedCharArray> layer;
+  layer->SetNumberOfValues(64);
+  layer->FillValue(0);
+  layer->SetValue(9, 1);
+  ExpectFilterError(MaskImage(flat, layer), "at least 2", "one-layer image");
+
+  vtkNew<vtkImageData> noArray;
+  noArray->SetDimensions(4, 4, 4);
+  ExpectFilterError(noArray, "no input array", "image without scalars");
+
+  // Two realisations of different shapes.
+  vtkNew<vtkUnsignedCharArray> small;
+  small->SetNumberOfValues(512);
+  small->FillValue(0);
+  small->SetValue(3, 1);
+  const int other[3] = { 8, 8, 6 };
+  vtkNew<vtkUnsignedCharArray> smaller;
+  smaller->SetNumberOfValues(384);
+  smaller->FillValue(0);
+  smaller->SetValue(3, 1);
+  vtkNew<vtkMultiBlockDataSet> mismatched;
+  mismatched->SetBlock(0, MaskImage(dims, small));
+  mismatched->SetBlock(1, MaskImage(other, smaller));
+  ExpectFilterError(mismatched, "share one grid shape", "mismatched realisations");
+
+  // Malformed sampler field data.
+  vtkNew<vtkPolyData> malformed;
+  vtkNew<vtkPoints> points;
+  points->InsertNextPoint(0.0, 0.0, 0.0);
+  malformed->SetPoints(points);
+  vtkNew<vtkDoubleArray> origin;
+  origin->SetName("SamplingGridOrigin");
+  origin->SetNumberOfComponents(2);
+  origin->SetNumberOfTuples(1);
+  malformed->GetFieldData()->AddArray(origin);
+  ExpectFilterError(malformed, "SamplingGridOrigin has 2 values", "malformed field data");
+}
+
+void FilterSinglePointAndFullMask()
+{
+  // One point, grid from GridDimensions over GridBounds.
+  vtkNew<vtkPolyData> one;
+  vtkNew<vtkPoints> points;
+  points->InsertNextPoint(0.3, 0.6, 0.2);
+  one->SetPoints(points);
+  vtkNew<vtkBlueNoiseSpectrum> filter;
+  filter->SetInputData(one);
+  filter->SetGridDimensions(16, 16, 16);
+  filter->SetGridBounds(0.0, 1.0, 0.0, 1.0, 0.0, 1.0);
+  filter->UseGridBoundsOn();
+  filter->Update();
+  Result r;
+  if (ResultFromTable(filter->GetOutput(), r))
+  {
+    Check(r.RadialPower.size() == 14, "filter, one point: " + Str(r.RadialPower.size()) + " shells");
+    for (std::size_t i = 0; i < r.RadialPower.size(); ++i)
+    {
+      Check(std::abs(r.RadialPower[i] - 1.0) <= 1e-9 && std::abs(r.Anisotropy[i]) <= 1e-9,
+        "filter, one point, shell " + Str(i + 1) + ": power " + Str(r.RadialPower[i]) +
+          ", anisotropy " + Str(r.Anisotropy[i]));
+    }
+    Check(r.NumberOfPoints == 1.0, "filter, one point: N = " + Str(r.NumberOfPoints));
+  }
+
+  // Full mask through the filter: a warning and nothing but finite numbers.
+  const int dims[3] = { 12, 12, 12 };
+  vtkNew<vtkUnsignedCharArray> ones;
+  ones->SetNumberOfValues(12 * 12 * 12);
+  ones->FillValue(1);
+  vtkNew<vtkBlueNoiseSpectrum> full;
+  vtkNew<MessageObserver> observer;
+  observer->Watch(full);
+  full->SetInputData(MaskImage(dims, ones));
+  full->Update();
+  Check(observer->ErrorCount == 0, "full mask: unexpected error '" + observer->Errors + "'");
+  Check(observer->Warnings.find("g = 1") != std::string::npos,
+    "full mask: expected a warning about g = 1, got '" + observer->Warnings + "'");
+  vtkTable* table = full->GetOutput();
+  Check(table->GetNumberOfRows() > 0, "full mask: empty table");
+  bool finite = true;
+  for (vtkIdType c = 0; c < table->GetNumberOfColumns(); ++c)
+  {
+    vtkDataArray* column = vtkDataArray::SafeDownCast(table->GetColumn(c));
+    for (vtkIdType i = 0; column && i < column->GetNumberOfTuples(); ++i)
+    {
+      finite = finite && std::isfinite(column->GetComponent(i, 0));
+    }
+  }
+  vtkFieldData* fd = table->GetFieldData();
+  for (int a = 0; a < fd->GetNumberOfArrays(); ++a)
+  {
+    vtkDataArray* array = fd->GetArray(a);
+    for (vtkIdType i = 0; array && i < array->GetNumberOfValues(); ++i)
+    {
+      finite = finite && std::isfinite(array->GetComponent(0, static_cast<int>(i)));
+    }
+  }
+  Check(finite, "full mask: a NaN or infinity in the table");
+  if (ResultFromTable(table, r))
+  {
+    Check(r.LowFrequencyRatio == 0.0 && r.Symmetry == 1.0,
+      "full mask through the filter: L = " + Str(r.LowFrequencyRatio) + ", S = " + Str(r.Symmetry));
+  }
+}
+}
+
+int main()
+{
+  std::mt19937 rng(31);
+  NonCubicWhiteNoise(rng);
+  KernelErrors();
+  FullMask(rng);
+  FilterErrors();
+  FilterSinglePointAndFullMask();
+  return bluenoise_test::Summary("TestBlueNoiseSpectrumEdgeCases");
+}

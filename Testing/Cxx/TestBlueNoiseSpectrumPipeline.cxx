@@ -1,0 +1,355 @@
+// The filter against the kernel: points at voxel centres with the sampler's
+// grid field data (rotated, offset extent), an image mask (uint8, a converted
+// integer type, cell data), averaged realisations (two connections, a
+// multiblock), a grid built over the bounds, the spectrum image's geometry and
+// the outside-points warning.
+#include "TestBlueNoiseSpectrumUtilities.h"
+
+#include "vtkBlueNoiseSpectrum.h"
+#include "vtkCellData.h"
+#include "vtkDoubleArray.h"
+#include "vtkImageData.h"
+#include "vtkInformation.h"
+#include "vtkIntArray.h"
+#include "vtkMatrix3x3.h"
+#include "vtkMultiBlockDataSet.h"
+#include "vtkNew.h"
+#include "vtkPointData.h"
+#include "vtkPoints.h"
+#include "vtkPolyData.h"
+#include "vtkShortArray.h"
+#include "vtkStreamingDemandDrivenPipeline.h"
+#include "vtkUnsignedCharArray.h"
+
+#include <cmath>
+
+using namespace spectrum_test;
+using bluenoise_test::MessageObserver;
+
+namespace
+{
+const int Dims[3] = { 20, 24, 16 };
+const int Lower[3] = { 2, 3, -1 };
+const double Origin[3] = { 1.0, 2.0, 3.0 };
+const double Spacing[3] = { 0.5, 0.25, 1.0 };
+// 90 degrees about z, row major, index to physical.
+const double Direction[9] = { 0, -1, 0, 1, 0, 0, 0, 0, 1 };
+
+template <typename ArrayT>
+void AddField(vtkPolyData* data, const char* name, int n, const double* v)
+{
+  vtkNew<ArrayT> array;
+  array->SetName(name);
+  array->SetNumberOfComponents(n);
+  array->SetNumberOfTuples(1);
+  for (int i = 0; i < n; ++i)
+  {
+    array->SetComponent(0, i, v[i]);
+  }
+  data->GetFieldData()->AddArray(array);
+}
+
+// The set voxels of `mask` as points at voxel centres, with the sampler's grid.
+vtkSmartPointer<vtkPolyData> SamplerPoints(const std::vector<unsigned char>& mask)
+{
+  vtkNew<vtkPoints> points;
+  points->SetDataTypeToDouble();
+  std::size_t v = 0;
+  for (int k = 0; k < Dims[2]; ++k)
+  {
+    for (int j = 0; j < Dims[1]; ++j)
+    {
+      for (int i = 0; i < Dims[0]; ++i, ++v)
+      {
+        if (!mask[v])
+        {
+          continue;
+        }
+        const double s[3] = { (i + Lower[0]) * Spacing[0], (j + Lower[1]) * Spacing[1],
+          (k + Lower[2]) * Spacing[2] };
+        double x[3];
+        for (int a = 0; a < 3; ++a)
+        {
+          x[a] = Origin[a] + Direction[3 * a] * s[0] + Direction[3 * a + 1] * s[1] +
+            Direction[3 * a + 2] * s[2];
+        }
+        points->InsertNextPoint(x);
+      }
+    }
+  }
+  auto data = vtkSmartPointer<vtkPolyData>::New();
+  data->SetPoints(points);
+  const double extent[6] = { static_cast<double>(Lower[0]), static_cast<double>(Lower[0] + Dims[0] - 1),
+    static_cast<double>(Lower[1]), static_cast<double>(Lower[1] + Dims[1] - 1),
+    static_cast<double>(Lower[2]), static_cast<double>(Lower[2] + Dims[2] - 1) };
+  AddField<vtkDoubleArray>(data, "SamplingGridOrigin", 3, Origin);
+  AddField<vtkDoubleArray>(data, "SamplingGridSpacing", 3, Spacing);
+  AddField<vtkIntArray>(data, "SamplingGridExtent", 6, extent);
+  AddField<vtkDoubleArray>(data, "SamplingGridDirection", 9, Direction);
+  return data;
+}
+
+// The mask as an image on the same grid: the active scalars, or with `cells`
+// a cell-data array named "cellmask".
+template <typename ArrayT>
+vtkSmartPointer<vtkImageData> MaskImage(const std::vector<unsigned char>& mask, bool cells)
+{
+  vtkNew<ArrayT> values;
+  values->SetNumberOfTuples(static_cast<vtkIdType>(mask.size()));
+  for (std::size_t v = 0; v < mask.size(); ++v)
+  {
+    values->SetComponent(static_cast<vtkIdType>(v), 0, mask[v]);
+  }
+  auto image = vtkSmartPointer<vtkImageData>::New();
+  const int c = cells ? 1 : 0;
+  image->SetExtent(Lower[0], Lower[0] + Dims[0] - 1 + c, Lower[1], Lower[1] + Dims[1] - 1 + c,
+    Lower[2], Lower[2] + Dims[2] - 1 + c);
+  image->SetOrigin(Origin[0], Origin[1], Origin[2]);
+  image->SetSpacing(Spacing[0], Spacing[1], Spacing[2]);
+  image->SetDirectionMatrix(Direction);
+  if (cells)
+  {
+    values->SetName("cellmask");
+    image->GetCellData()->AddArray(values);
+  }
+  else
+  {
+    image->GetPointData()->SetScalars(values);
+  }
+  return image;
+}
+
+Result KernelResult(const std::vector<std::vector<unsigned char>>& masks, const int dims[3],
+  std::vector<double>* spectrum = nullptr)
+{
+  vtkBlueNoiseSpectrumKernel kernel;
+  kernel.SetDimensions(dims[0], dims[1], dims[2]);
+  for (const auto& mask : masks)
+  {
+    kernel.AddRealisation(mask.data());
+  }
+  Result r;
+  kernel.Compute(r);
+  if (spectrum)
+  {
+    kernel.GetCentredPowerSpectrum(*spectrum);
+  }
+  return r;
+}
+
+void CheckFilter(vtkBlueNoiseSpectrum* filter, const Result& expected, const std::string& what)
+{
+  vtkNew<MessageObserver> observer;
+  observer->Watch(filter);
+  filter->Update();
+  Check(observer->ErrorCount == 0 && observer->WarningCount == 0,
+    what + ": unexpected messages '" + observer->Errors + observer->Warnings + "'");
+  Result r;
+  if (ResultFromTable(filter->GetOutput(), r))
+  {
+    CheckSameResult(r, expected, 1e-12, what);
+  }
+}
+
+void CheckImage(vtkImageData* image, const int dims[3], const std::vector<double>& spectrum,
+  const std::string& what)
+{
+  int d[3];
+  image->GetDimensions(d);
+  if (!Check(d[0] == dims[0] && d[1] == dims[1] && d[2] == dims[2],
+        what + ": image dimensions " + Str(d[0]) + " " + Str(d[1]) + " " + Str(d[2])))
+  {
+    return;
+  }
+  for (int a = 0; a < 3; ++a)
+  {
+    CheckClose(image->GetSpacing()[a], 1.0 / dims[a], 1e-15, what + " spacing");
+    CheckClose(image->GetOrigin()[a], -static_cast<double>(dims[a] / 2) / dims[a], 1e-15,
+      what + " origin");
+  }
+  // The point of index floor(L/2) is the zero frequency.
+  double centre[3];
+  const int c[3] = { dims[0] / 2, dims[1] / 2, dims[2] / 2 };
+  image->GetPoint(image->ComputePointId(const_cast<int*>(c)), centre);
+  Check(std::abs(centre[0]) + std::abs(centre[1]) + std::abs(centre[2]) < 1e-15,
+    what + ": index floor(L/2) is not at frequency 0");
+  vtkDataArray* power = image->GetPointData()->GetArray("Power");
+  if (!Check(power && power->GetNumberOfTuples() == static_cast<vtkIdType>(spectrum.size()),
+        what + ": no Power array of the right size"))
+  {
+    return;
+  }
+  bool same = true;
+  for (std::size_t i = 0; i < spectrum.size(); ++i)
+  {
+    same = same && Close(power->GetComponent(static_cast<vtkIdType>(i), 0), spectrum[i], 1e-12);
+  }
+  Check(same, what + ": Power differs from the kernel's centred spectrum");
+  Check(power->GetComponent(image->ComputePointId(const_cast<int*>(c)), 0) == 0.0,
+    what + ": DC is not 0");
+}
+}
+
+int main()
+{
+  std::mt19937 rng(4242);
+  const std::vector<unsigned char> mask = RandomMask(Dims, 0.1, rng);
+  const std::vector<unsigned char> second = RandomMask(Dims, 0.15, rng);
+  std::vector<double> spectrum;
+  const Result single = KernelResult({ mask }, Dims, &spectrum);
+
+  // Points with the sampler's field data.
+  {
+    vtkNew<vtkBlueNoiseSpectrum> filter;
+    filter->SetInputData(SamplerPoints(mask));
+    CheckFilter(filter, single, "sampler points");
+    CheckImage(filter->GetSpectrumImageOutput(), Dims, spectrum, "sampler points");
+    int wholeExtent[6];
+    filter->GetOutputInformation(1)->Get(
+      vtkStreamingDemandDrivenPipeline::WHOLE_EXTENT(), wholeExtent);
+    Check(wholeExtent[1] == Dims[0] - 1 && wholeExtent[3] == Dims[1] - 1 &&
+        wholeExtent[5] == Dims[2] - 1,
+      "sampler points: WHOLE_EXTENT of the spectrum image not corrected");
+    vtkDataArray* grid = filter->GetOutput()->GetFieldData()->GetArray("GridDimensions");
+    Check(grid && grid->GetComponent(0, 0) == Dims[0] && grid->GetComponent(0, 1) == Dims[1] &&
+        grid->GetComponent(0, 2) == Dims[2],
+      "sampler points: GridDimensions field array");
+
+    filter->GenerateSpectrumImageOff();
+    filter->Update();
+    Check(filter->GetSpectrumImageOutput()->GetNumberOfPoints() == 0,
+      "GenerateSpectrumImage off still produced an image");
+  }
+
+  // Image masks: uint8 point data (used directly), short (converted), cells.
+  {
+    vtkNew<vtkBlueNoiseSpectrum> filter;
+    filter->SetInputData(MaskImage<vtkUnsignedCharArray>(mask, false));
+    CheckFilter(filter, single, "uint8 image");
+    CheckImage(filter->GetSpectrumImageOutput(), Dims, spectrum, "uint8 image");
+    int wholeExtent[6];
+    filter->UpdateInformation();
+    filter->GetOutputInformation(1)->Get(
+      vtkStreamingDemandDrivenPipeline::WHOLE_EXTENT(), wholeExtent);
+    Check(wholeExtent[1] == Dims[0] - 1 && wholeExtent[3] == Dims[1] - 1 &&
+        wholeExtent[5] == Dims[2] - 1,
+      "uint8 image: RequestInformation announces a wrong WHOLE_EXTENT");
+  }
+  {
+    vtkNew<vtkBlueNoiseSpectrum> filter;
+    filter->SetInputData(MaskImage<vtkShortArray>(mask, false));
+    CheckFilter(filter, single, "int16 image");
+  }
+  {
+    vtkNew<vtkBlueNoiseSpectrum> filter;
+    filter->SetInputData(MaskImage<vtkDoubleArray>(mask, true));
+    filter->SetInputArrayToProcess(0, 0, 0, vtkDataObject::FIELD_ASSOCIATION_CELLS, "cellmask");
+    CheckFilter(filter, single, "cell-data image");
+  }
+
+  // Two realisations: two connections, and a multiblock of two.
+  const Result averaged = KernelResult({ mask, second }, Dims);
+  {
+    vtkNew<vtkBlueNoiseSpectrum> filter;
+    filter->AddInputData(SamplerPoints(mask));
+    filter->AddInputData(MaskImage<vtkUnsignedCharArray>(second, false));
+    CheckFilter(filter, averaged, "two connections");
+  }
+  {
+    vtkNew<vtkMultiBlockDataSet> blocks;
+    blocks->SetBlock(0, SamplerPoints(mask));
+    blocks->SetBlock(1, SamplerPoints(second));
+    vtkNew<vtkBlueNoiseSpectrum> filter;
+    filter->SetInputData(blocks);
+    CheckFilter(filter, averaged, "multiblock");
+  }
+
+  // No field data: GridDimensions over the bounds. Points on integer
+  // coordinates with both corners set span exactly Dims grid points.
+  {
+    std::vector<unsigned char> spanning = mask;
+    spanning.front() = 1;
+    spanning.back() = 1;
+    vtkNew<vtkPoints> points;
+    std::size_t v = 0;
+    for (int k = 0; k < Dims[2]; ++k)
+    {
+      for (int j = 0; j < Dims[1]; ++j)
+      {
+        for (int i = 0; i < Dims[0]; ++i, ++v)
+        {
+          if (spanning[v])
+          {
+            points->InsertNextPoint(10.0 + 2.0 * i, -5.0 + 0.5 * j, 3.0 * k);
+          }
+        }
+      }
+    }
+    vtkNew<vtkPolyData> data;
+    data->SetPoints(points);
+    vtkNew<vtkBlueNoiseSpectrum> filter;
+    filter->SetInputData(data);
+    filter->SetGridDimensions(Dims[0], Dims[1], Dims[2]);
+    CheckFilter(filter, KernelResult({ spanning }, Dims), "grid over the bounds");
+
+    // The sampler's points with UseInputGrid off use GridDimensions too.
+    vtkNew<vtkBlueNoiseSpectrum> forced;
+    forced->SetInputData(SamplerPoints(mask));
+    forced->UseInputGridOff();
+    forced->SetGridDimensions(8, 10, 12);
+    forced->Update();
+    Result r;
+    if (ResultFromTable(forced->GetOutput(), r))
+    {
+      Check(r.Frequency.size() == static_cast<std::size_t>(std::lround(8 * std::sqrt(
+                                    0.25 + 0.25 + 0.25))),
+        "UseInputGrid off: " + Str(r.Frequency.size()) + " shells on an 8x10x12 grid");
+      CheckClose(r.NumberOfPoints, single.NumberOfPoints, 0.0, "UseInputGrid off: N");
+    }
+
+    // Grid bounds that leave points out: a warning with their number.
+    vtkNew<vtkBlueNoiseSpectrum> cropped;
+    vtkNew<MessageObserver> observer;
+    observer->Watch(cropped);
+    cropped->SetInputData(data);
+    cropped->SetGridDimensions(8, 8, 8);
+    cropped->SetGridBounds(10.0, 20.0, -5.0, 0.0, 0.0, 20.0);
+    cropped->UseGridBoundsOn();
+    cropped->Update();
+    vtkIdType inside = 0;
+    for (vtkIdType i = 0; i < points->GetNumberOfPoints(); ++i)
+    {
+      double x[3];
+      points->GetPoint(i, x);
+      inside += (x[0] <= 20.0 + 10.0 / 14 && x[1] <= 0.0 + 5.0 / 14 && x[2] <= 20.0 + 20.0 / 14)
+        ? 1
+        : 0;
+    }
+    const std::string count = Str(points->GetNumberOfPoints() - inside) + " of " +
+      Str(points->GetNumberOfPoints());
+    Check(observer->Warnings.find(count) != std::string::npos,
+      "cropped grid: expected a warning about " + count + " points, got '" + observer->Warnings +
+        "'");
+    if (ResultFromTable(cropped->GetOutput(), r))
+    {
+      CheckClose(r.NumberOfPoints, static_cast<double>(inside), 0.0, "cropped grid: N");
+    }
+  }
+
+  // Weight reaches the target.
+  {
+    vtkNew<vtkBlueNoiseSpectrum> filter;
+    filter->SetInputData(SamplerPoints(mask));
+    filter->SetWeight(0.5);
+    filter->Update();
+    Result r;
+    if (ResultFromTable(filter->GetOutput(), r))
+    {
+      CheckClose(r.TargetValue, 0.5 * single.LowFrequencyRatio + 0.5 * single.Symmetry, 1e-14,
+        "Weight 0.5: T");
+    }
+    filter->SetWeight(7.0);
+    Check(filter->GetWeight() == 1.0, "Weight not clamped: " + Str(filter->GetWeight()));
+  }
+  return bluenoise_test::Summary("TestBlueNoiseSpectrumPipeline");
+}
