@@ -322,6 +322,14 @@ int vtkErrorDiffusionSampler::RequestData(
   int association = -1;
   vtkAbstractArray* abstractArray =
     this->GetInputAbstractArrayToProcess(0, inputVector, association);
+  vtkInformation* selection = this->GetInputArrayInformation(0);
+  if (!abstractArray && selection->Has(vtkDataObject::FIELD_NAME()) &&
+    std::string(selection->Get(vtkDataObject::FIELD_NAME())).empty())
+  {
+    // An empty name (ParaView before the user picks an array): active scalars.
+    abstractArray = input->GetPointData()->GetScalars();
+    association = vtkDataObject::FIELD_ASSOCIATION_POINTS;
+  }
   if (!abstractArray)
   {
     vtkErrorMacro("No density array: select a point-data array with SetInputArrayToProcess "
