@@ -240,8 +240,8 @@ vtkIdType vtkErrorDiffusionKernel::ScanLayer(
 
   float cachedG = -1.0f;
   float w[6] = { 0, 0, 0, 0, 0, 0 };
-  float modulation = 0.0f;
-  float base = 0.5f; // 0.5 - C(g) below g = 0.5, 0.5 + C(1 - g) above
+  float base = 0.5f;       // 0.5 - C(g) below g = 0.5, 0.5 + C(1 - g) above
+  float modulation = 0.0f; // s * m(g), negative above g = 0.5 (the mirrored process)
   vtkIdType count = 0;
 
   for (int q = 0; q < s.NV; ++q)
@@ -252,32 +252,32 @@ vtkIdType vtkErrorDiffusionKernel::ScanLayer(
     const bool hasPrevRow = q > 0;
     const bool hasNextRow = q + 1 < s.NV;
     const bool fullRow = hasPrevRow && hasNextRow && nextLayerExists;
+    // The share for the next voxel of the row stays in a register: it is the
+    // only dependency from one voxel to the next.
+    float carry = 0.0f;
     for (int p = 0; p < s.NU; ++p, idx += d)
     {
       const float g = density[idx];
-      if (!(g > 0.0f))
+      if (!(g > 0.0f) || g >= 1.0f)
       {
-        mask[idx] = 0;
-        continue;
-      }
-      if (g >= 1.0f)
-      {
-        mask[idx] = 1;
-        ++count;
+        const unsigned char b = g >= 1.0f ? 1 : 0;
+        mask[idx] = b;
+        count += b;
+        carry = 0.0f;
         continue;
       }
       if (g != cachedG)
       {
         const auto params = this->Table.Evaluate(g);
         std::copy(params.Weights.begin(), params.Weights.end(), w);
-        modulation = scale * params.Modulation;
         const float charge = this->ChargeAt(g);
         base = g <= 0.5f ? 0.5f - charge : 0.5f + charge;
+        modulation = (g <= 0.5f ? scale : -scale) * params.Modulation;
         cachedG = g;
       }
-      const float value = g + cur[idx];
-      const float noise = modulation * this->Random.Uniform();
-      const float threshold = g <= 0.5f ? base + noise : base - noise;
+      const float value = (g + cur[idx]) + carry; // g + cur[idx] is off the critical path
+      cur[idx] = value - g; // all the voxel received, read by GetSteadyStateCharges
+      const float threshold = base + modulation * this->Random.Uniform();
       const unsigned char b = value >= threshold ? 1 : 0;
       mask[idx] = b;
       count += b;
@@ -287,7 +287,9 @@ vtkIdType vtkErrorDiffusionKernel::ScanLayer(
       const bool hasNextU = p + 1 < s.NU;
       if (fullRow && hasPrevU && hasNextU)
       {
-        cur[idx + d] += e * w[TARGET_U];
+        // value * w - b * w: the product does not wait for the comparison.
+        const float taken = value >= threshold ? w[TARGET_U] : 0.0f;
+        carry = value * w[TARGET_U] - taken;
         cur[idx - d + V] += e * w[TARGET_BACK_V];
         cur[idx + V] += e * w[TARGET_V];
         nxt[idx - V] += e * w[TARGET_Z_BACKV];
@@ -303,6 +305,7 @@ vtkIdType vtkErrorDiffusionKernel::ScanLayer(
       {
         sum += valid[t] ? w[t] : 0.0f;
       }
+      carry = 0.0f;
       if (!(sum > 0.0f))
       {
         continue; // the last voxel of the volume: nowhere to go
@@ -310,7 +313,7 @@ vtkIdType vtkErrorDiffusionKernel::ScanLayer(
       const float f = e / sum;
       if (valid[TARGET_U])
       {
-        cur[idx + d] += f * w[TARGET_U];
+        carry = f * w[TARGET_U];
       }
       if (valid[TARGET_BACK_V])
       {

@@ -110,24 +110,36 @@ void FillLayerDensity(vtkDataArray* array, vtkIdType begin, vtkIdType end, int c
   }
 }
 
-// Voxel ids (relative to `extent`) to world coordinates, x y z interleaved.
+// Voxel ids (relative to `extent`, increasing) to world coordinates, x y z
+// interleaved. The ids increase, so the layer index advances instead of being
+// divided out, and the in-layer index needs one 32-bit division.
 template <typename T>
 void WriteVoxelCentres(
   const std::vector<vtkIdType>& ids, const int extent[6], const double m[16], T* xyz)
 {
   const vtkIdType nx = extent[1] - extent[0] + 1;
   const vtkIdType nxy = nx * (extent[3] - extent[2] + 1);
+  const bool small = nxy <= VTK_TYPE_UINT32_MAX;
   vtkSMPTools::For(0, static_cast<vtkIdType>(ids.size()), [&](vtkIdType begin, vtkIdType end) {
+    vtkIdType k = ids[begin] / nxy;
     for (vtkIdType p = begin; p < end; ++p)
     {
       const vtkIdType id = ids[p];
-      const double i = static_cast<double>(extent[0] + id % nx);
-      const double j = static_cast<double>(extent[2] + (id % nxy) / nx);
-      const double k = static_cast<double>(extent[4] + id / nxy);
+      while (id >= (k + 1) * nxy)
+      {
+        ++k;
+      }
+      const vtkIdType inLayer = id - k * nxy;
+      const vtkIdType j = small
+        ? static_cast<vtkIdType>(static_cast<vtkTypeUInt32>(inLayer) / static_cast<vtkTypeUInt32>(nx))
+        : inLayer / nx;
+      const double x = static_cast<double>(extent[0] + (inLayer - j * nx));
+      const double y = static_cast<double>(extent[2] + j);
+      const double z = static_cast<double>(extent[4] + k);
       for (int r = 0; r < 3; ++r)
       {
         xyz[3 * p + r] =
-          static_cast<T>(m[4 * r] * i + m[4 * r + 1] * j + m[4 * r + 2] * k + m[4 * r + 3]);
+          static_cast<T>(m[4 * r] * x + m[4 * r + 1] * y + m[4 * r + 2] * z + m[4 * r + 3]);
       }
     }
   });
@@ -480,18 +492,27 @@ int vtkErrorDiffusionSampler::RequestData(
     const vtkIdType first = k * layerSize;
     FillLayerDensity(array, first, first + layerSize, this->Component, map, density.data());
     unsigned char* bits = maskArray ? maskArray->GetPointer(first) : layerMask.data();
-    if (kernel.ProcessLayer(density.data(), bits) == 0)
+    const vtkIdType found = kernel.ProcessLayer(density.data(), bits);
+    if (found == 0)
     {
       continue;
     }
+    // Branch-free collection: at densities near 0.5 a branch per voxel would
+    // be mispredicted half of the time.
+    const size_t done = sampleIds.size();
+    sampleIds.resize(done + layerSize);
+    sampleDensity.resize(done + layerSize);
+    vtkIdType* ids = sampleIds.data() + done;
+    float* values = sampleDensity.data() + done;
+    vtkIdType n = 0;
     for (vtkIdType i = 0; i < layerSize; ++i)
     {
-      if (bits[i])
-      {
-        sampleIds.push_back(first + i);
-        sampleDensity.push_back(density[i]);
-      }
+      ids[n] = first + i;
+      values[n] = density[i];
+      n += bits[i];
     }
+    sampleIds.resize(done + n);
+    sampleDensity.resize(done + n);
   }
 
   // --- Points at voxel centres, in world coordinates.
