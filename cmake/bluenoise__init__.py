@@ -1,0 +1,6 @@
+"""Blue-noise sampling of volumes by 3D error diffusion, and a 3D blue-noise spectrum.
+
+vtkErrorDiffusionSampler: vtkImageData in, blue-noise sample points (vtkPolyData) out.
+vtkBlueNoiseSpectrum: points or image in, radially averaged power spectrum and metrics out.
+"""
+from .vtkFiltersBlueNoise import *  # noqa: F401,F403
