@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # Installs what is needed, builds and runs the whole test suite:
 #   1. against the ParaView 5.11 SDK (module, plugin, Python, all tests);
-#   2. VTK-only (no ParaView plugin) against ParaView's VTK through VTK_DIR.
+#   2. VTK-only (no ParaView plugin) against ParaView's VTK through VTK_DIR;
+#   3. VTK-only against a real VTK 9.1 (Debian's, unpacked into _build/).
 # Usage: bash scripts/test.sh   (from anywhere; run as root or with sudo rights)
 set -euo pipefail
 root="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
@@ -22,4 +23,8 @@ run_suite() { # name, cmake args...
 
 run_suite paraview -DParaView_DIR="$paraview_dir"
 run_suite vtk-only -DBLUENOISE_VTK_ONLY=ON -DVTK_DIR="$paraview_dir/vtk"
+vtk91="$root/_build/vtk-9.1-prefix"
+bash "$root/scripts/unpack-vtk91.sh" "$vtk91"
+run_suite vtk-9.1 -DBLUENOISE_VTK_ONLY=ON -DBLUENOISE_WRAP_PYTHON=OFF \
+  -DVTK_DIR="$vtk91/usr/lib/x86_64-linux-gnu/cmake/vtk-9.1"
 exit $status
