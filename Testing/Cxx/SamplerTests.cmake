@@ -10,3 +10,4 @@ set_tests_properties(TestErrorDiffusionSamplerBrain PROPERTIES SKIP_RETURN_CODE 
 bluenoise_add_test(TestErrorDiffusionSamplerLargeExtent LABELS sampler large TIMEOUT 900)
 # About 2.2 GB for the input alone; keep it from sharing the machine.
 set_tests_properties(TestErrorDiffusionSamplerLargeExtent PROPERTIES RUN_SERIAL ON)
+bluenoise_add_test(TestErrorDiffusionSamplerBlueNoise LABELS sampler spectrum)
