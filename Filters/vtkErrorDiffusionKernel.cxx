@@ -172,6 +172,10 @@ std::vector<float> vtkErrorDiffusionKernel::GetSteadyStateCharges(
     charges.push_back(static_cast<float>(sum / count));
   }
   std::lock_guard<std::mutex> lock(ChargeCacheMutex);
+  if (ChargeCache.size() >= 1024)
+  {
+    ChargeCache.clear(); // a parameter search makes a new table per candidate
+  }
   ChargeCache[key.str()] = charges;
   return charges;
 }

@@ -11,3 +11,5 @@ bluenoise_add_test(TestErrorDiffusionSamplerLargeExtent LABELS sampler large TIM
 # About 2.2 GB for the input alone; keep it from sharing the machine.
 set_tests_properties(TestErrorDiffusionSamplerLargeExtent PROPERTIES RUN_SERIAL ON)
 bluenoise_add_test(TestErrorDiffusionSamplerBlueNoise LABELS sampler spectrum)
+bluenoise_add_test(TestNelderMeadMinimizer LABELS optimizer)
+bluenoise_add_test(TestErrorDiffusionOptimizer LABELS optimizer)

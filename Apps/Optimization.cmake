@@ -1,0 +1,4 @@
+# bluenoise-optimize: the parameter search of the paper (section 4.2).
+add_executable(bluenoise-optimize bluenoise_optimize.cxx)
+target_link_libraries(bluenoise-optimize PRIVATE BlueNoise::FiltersBlueNoise Threads::Threads)
+install(TARGETS bluenoise-optimize RUNTIME DESTINATION "${CMAKE_INSTALL_BINDIR}")

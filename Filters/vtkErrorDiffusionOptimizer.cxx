@@ -1,0 +1,275 @@
+#include "vtkErrorDiffusionOptimizer.h"
+
+#include "vtkBlueNoiseSpectrumKernel.h"
+#include "vtkErrorDiffusionKernel.h"
+#include "vtkNelderMeadMinimizer.h"
+
+#include <cmath>
+#include <limits>
+#include <vector>
+
+namespace
+{
+using Key = vtkErrorDiffusionParameterTable::Key;
+
+vtkErrorDiffusionOptimizer::Metrics ToMetrics(
+  const vtkBlueNoiseSpectrumKernel::Result& r, int gridSize)
+{
+  vtkErrorDiffusionOptimizer::Metrics m;
+  m.Target = r.TargetValue;
+  m.LowFrequencyRatio = r.LowFrequencyRatio;
+  m.Symmetry = r.Symmetry;
+  m.Points = r.NumberOfPoints;
+  const size_t shells = std::min<size_t>(r.AnisotropyDB.size(), gridSize / 2);
+  for (size_t s = 0; s < shells; ++s)
+  {
+    m.AnisotropyDB += r.AnisotropyDB[s] / static_cast<double>(shells);
+  }
+  return m;
+}
+
+// Samples the cube once per seed and feeds the spectra (whole, and cropped
+// when `interior` is given).
+bool Measure(const vtkErrorDiffusionParameterTable& table, double level,
+  const vtkErrorDiffusionOptimizer::Settings& settings, vtkBlueNoiseSpectrumKernel& whole,
+  vtkBlueNoiseSpectrumKernel* interior, std::string* error)
+{
+  const int n = settings.GridSize;
+  const size_t layer = static_cast<size_t>(n) * n;
+  std::vector<float> density(layer, static_cast<float>(level / 255.0));
+  std::vector<unsigned char> mask(layer * n);
+  const int crop = settings.CropFaces;
+  const int inner = n - 2 * crop;
+  std::vector<unsigned char> inside;
+  if (interior)
+  {
+    inside.resize(static_cast<size_t>(inner) * inner * inner);
+  }
+  for (int s = 0; s < settings.Seeds; ++s)
+  {
+    vtkErrorDiffusionKernel kernel;
+    kernel.SetParameters(table);
+    kernel.SetModulationScale(settings.ModulationScale);
+    kernel.SetBoundaryMode(settings.BoundaryMode);
+    kernel.SetWarmUpLayers(settings.WarmUpLayers);
+    kernel.SetSeed(static_cast<std::uint64_t>(settings.FirstSeed + s));
+    kernel.Begin(n, n, n);
+    for (int z = 0; z < n; ++z)
+    {
+      kernel.ProcessLayer(density.data(), mask.data() + z * layer);
+    }
+    if (!whole.AddRealisation(mask.data(), error))
+    {
+      return false;
+    }
+    if (interior)
+    {
+      size_t o = 0;
+      for (int z = crop; z < n - crop; ++z)
+      {
+        for (int y = crop; y < n - crop; ++y)
+        {
+          const unsigned char* row = mask.data() + (static_cast<size_t>(z) * n + y) * n;
+          for (int x = crop; x < n - crop; ++x)
+          {
+            inside[o++] = row[x];
+          }
+        }
+      }
+      if (!interior->AddRealisation(inside.data(), error))
+      {
+        return false;
+      }
+    }
+  }
+  return true;
+}
+
+bool CheckSettings(
+  const vtkErrorDiffusionOptimizer::Settings& settings, double level, std::string* error)
+{
+  auto fail = [error](const char* why) {
+    if (error)
+    {
+      *error = why;
+    }
+    return false;
+  };
+  if (settings.GridSize < 4)
+  {
+    return fail("the grid size must be at least 4");
+  }
+  if (settings.Seeds < 1)
+  {
+    return fail("at least one seed is needed");
+  }
+  if (!(level > 0.0 && level < 255.0))
+  {
+    return fail("the level must be in (0, 255) (1/255 units)");
+  }
+  return true;
+}
+}
+
+//------------------------------------------------------------------------------
+vtkErrorDiffusionParameterTable vtkErrorDiffusionOptimizer::SingleKeyTable(
+  const Key& key, double level)
+{
+  Key k = key;
+  k.Level = std::min(std::max(level > 127.5 ? 255.0 - level : level, 1e-6), 127.5);
+  vtkErrorDiffusionParameterTable table;
+  table.SetKeys({ k });
+  return table;
+}
+
+//------------------------------------------------------------------------------
+Key vtkErrorDiffusionOptimizer::KeyAt(const vtkErrorDiffusionParameterTable& table, double level)
+{
+  const auto p = table.Evaluate(level / 255.0);
+  Key k;
+  k.Level = level;
+  for (int c = 0; c < vtkErrorDiffusionParameterTable::NumberOfCoefficients; ++c)
+  {
+    k.Coefficients[c] = p.Weights[c];
+  }
+  k.Modulation = p.Modulation;
+  return k;
+}
+
+//------------------------------------------------------------------------------
+bool vtkErrorDiffusionOptimizer::Evaluate(const vtkErrorDiffusionParameterTable& table,
+  double level, const Settings& settings, Evaluation& result, bool interior, std::string* error)
+{
+  if (!CheckSettings(settings, level, error))
+  {
+    return false;
+  }
+  if (interior && settings.GridSize - 2 * settings.CropFaces < 4)
+  {
+    if (error)
+    {
+      *error = "CropFaces leaves less than 4 voxels";
+    }
+    return false;
+  }
+  const int n = settings.GridSize;
+  vtkBlueNoiseSpectrumKernel whole;
+  vtkBlueNoiseSpectrumKernel inner;
+  const int m = n - 2 * settings.CropFaces;
+  if (!whole.SetDimensions(n, n, n, error) || (interior && !inner.SetDimensions(m, m, m, error)))
+  {
+    return false;
+  }
+  whole.SetWeight(settings.Weight);
+  inner.SetWeight(settings.Weight);
+  if (!Measure(table, level, settings, whole, interior ? &inner : nullptr, error))
+  {
+    return false;
+  }
+  vtkBlueNoiseSpectrumKernel::Result r;
+  if (!whole.Compute(r, error))
+  {
+    return false;
+  }
+  result.Whole = ToMetrics(r, n);
+  if (interior)
+  {
+    if (!inner.Compute(r, error))
+    {
+      return false;
+    }
+    result.Interior = ToMetrics(r, m);
+  }
+  return true;
+}
+
+//------------------------------------------------------------------------------
+vtkErrorDiffusionOptimizer::LevelResult vtkErrorDiffusionOptimizer::OptimizeLevel(
+  double level, const Key& start, const Settings& settings, const Progress& progress)
+{
+  LevelResult result;
+  result.Level = level;
+  result.Start = start;
+  result.Start.Level = level;
+  double sum = 0.0;
+  for (double a : start.Coefficients)
+  {
+    sum += std::abs(a);
+  }
+  const int n = settings.GridSize;
+  vtkBlueNoiseSpectrumKernel spectrum; // reused: its buffers and plan stay
+  if (!CheckSettings(settings, level, nullptr) || !(sum > 0.0) ||
+    !spectrum.SetDimensions(n, n, n))
+  {
+    return result;
+  }
+  spectrum.SetWeight(settings.Weight);
+
+  auto toKey = [level](const std::vector<double>& x) {
+    Key k;
+    k.Level = level;
+    for (int c = 0; c < 6; ++c)
+    {
+      k.Coefficients[c] = std::abs(x[c]);
+    }
+    k.Modulation = std::abs(x[6]);
+    return k;
+  };
+  auto metricsOf = [&](const Key& key, Metrics& metrics) {
+    double total = 0.0;
+    for (double a : key.Coefficients)
+    {
+      total += a;
+    }
+    if (!(total > 0.0) || !std::isfinite(total) || !std::isfinite(key.Modulation))
+    {
+      return false;
+    }
+    spectrum.Reset();
+    vtkBlueNoiseSpectrumKernel::Result r;
+    if (!Measure(SingleKeyTable(key, level), level, settings, spectrum, nullptr, nullptr) ||
+      !spectrum.Compute(r))
+    {
+      return false;
+    }
+    metrics = ToMetrics(r, n);
+    return true;
+  };
+  auto objective = [&](const std::vector<double>& x) {
+    Metrics m;
+    return metricsOf(toKey(x), m) ? m.Target : std::numeric_limits<double>::infinity();
+  };
+
+  std::vector<double> x0(7), steps(7);
+  for (int c = 0; c < 6; ++c)
+  {
+    x0[c] = std::abs(start.Coefficients[c]) / sum;
+    steps[c] = 0.05; // a quarter or so of a typical weight
+  }
+  x0[6] = std::abs(start.Modulation);
+  steps[6] = 0.15;
+
+  vtkNelderMeadMinimizer minimizer;
+  minimizer.SetMaximumEvaluations(settings.MaximumEvaluations);
+  minimizer.SetTolerance(settings.Tolerance);
+  if (progress)
+  {
+    minimizer.SetObserver(progress);
+  }
+  const auto best = minimizer.Minimize(objective, x0, steps);
+  result.Evaluations = best.Evaluations;
+  result.Start = toKey(x0);
+  metricsOf(result.Start, result.StartMetrics);
+  result.Optimized = toKey(best.Point);
+  double total = 0.0;
+  for (double a : result.Optimized.Coefficients)
+  {
+    total += a;
+  }
+  for (double& a : result.Optimized.Coefficients)
+  {
+    a /= total;
+  }
+  metricsOf(result.Optimized, result.OptimizedMetrics);
+  return result;
+}

@@ -1,0 +1,53 @@
+// The parameter optimiser on a tiny grid with a tiny budget lowers T(g) from
+// its start point, returns normalised coefficients, and its figures agree with
+// Evaluate() on the same settings (one metric implementation).
+#include "BlueNoiseTestUtilities.h"
+#include "vtkErrorDiffusionOptimizer.h"
+
+#include <cmath>
+
+using namespace bluenoise_test;
+
+int main()
+{
+  vtkErrorDiffusionOptimizer::Settings settings;
+  settings.GridSize = 24;
+  settings.Seeds = 2;
+  settings.MaximumEvaluations = 60;
+  // A deliberately poor start: the Fixed baseline at 16/255.
+  const auto start = vtkErrorDiffusionOptimizer::KeyAt(vtkErrorDiffusionParameterTable::Fixed(), 16);
+  int calls = 0;
+  const auto r = vtkErrorDiffusionOptimizer::OptimizeLevel(
+    16, start, settings, [&calls](int, double) { ++calls; });
+  std::cout << "T(16/255): start " << r.StartMetrics.Target << ", optimised "
+            << r.OptimizedMetrics.Target << " after " << r.Evaluations << " evaluations"
+            << std::endl;
+  Check(r.Evaluations > 0 && r.Evaluations <= settings.MaximumEvaluations + 8, "budget honoured");
+  Check(calls > 0, "progress reported");
+  Check(r.OptimizedMetrics.Target < r.StartMetrics.Target, "T lowered from the start point");
+  double sum = 0.0;
+  for (double a : r.Optimized.Coefficients)
+  {
+    sum += a;
+    Check(a >= 0.0, "coefficients non-negative");
+  }
+  Check(std::abs(sum - 1.0) < 1e-9, "coefficients normalised");
+  Check(r.OptimizedMetrics.Points > 0.9 * 16.0 / 255.0 * 24 * 24 * 24, "sample count sane");
+
+  // Evaluate() with the optimised key gives the same T.
+  vtkErrorDiffusionOptimizer::Evaluation e;
+  std::string error;
+  Check(vtkErrorDiffusionOptimizer::Evaluate(
+          vtkErrorDiffusionOptimizer::SingleKeyTable(r.Optimized, 16), 16, settings, e, true, &error),
+    "Evaluate: " + error);
+  Check(std::abs(e.Whole.Target - r.OptimizedMetrics.Target) < 1e-12,
+    "Evaluate agrees with the optimiser");
+  Check(e.Interior.Points > 0 && e.Interior.Points < e.Whole.Points, "interior figures computed");
+  // Bad settings are refused.
+  settings.GridSize = 2;
+  Check(!vtkErrorDiffusionOptimizer::Evaluate(vtkErrorDiffusionParameterTable::Paper(), 16,
+          settings, e, false, &error) &&
+      !error.empty(),
+    "bad grid size refused");
+  return Summary("TestErrorDiffusionOptimizer");
+}
