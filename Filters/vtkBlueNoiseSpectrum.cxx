@@ -93,8 +93,8 @@ struct Realisation
   AnalysisGrid Grid;
 };
 
-// A field-data array read as `count` doubles; false when absent, throws the
-// reason through `error` when present but malformed.
+// A field-data array read as `count` doubles. False when it is absent, and
+// also when it is malformed, which then sets `error`.
 bool ReadFieldValues(
   vtkFieldData* fd, const char* name, int count, double* values, std::string& error)
 {
@@ -131,8 +131,10 @@ bool GridFromFieldData(vtkFieldData* fd, AnalysisGrid& grid, bool& found, std::s
   double origin[3], spacing[3], extent[6];
   double direction[9] = { 1, 0, 0, 0, 1, 0, 0, 0, 1 };
   const bool hasOrigin = ReadFieldValues(fd, "SamplingGridOrigin", 3, origin, error);
-  const bool hasSpacing = error.empty() && ReadFieldValues(fd, "SamplingGridSpacing", 3, spacing, error);
-  const bool hasExtent = error.empty() && ReadFieldValues(fd, "SamplingGridExtent", 6, extent, error);
+  const bool hasSpacing =
+    error.empty() && ReadFieldValues(fd, "SamplingGridSpacing", 3, spacing, error);
+  const bool hasExtent =
+    error.empty() && ReadFieldValues(fd, "SamplingGridExtent", 6, extent, error);
   if (error.empty())
   {
     ReadFieldValues(fd, "SamplingGridDirection", 9, direction, error);
@@ -200,8 +202,8 @@ bool CheckImageArray(vtkDataArray* array, int association, bool& cells, std::str
   if (array->GetNumberOfComponents() != 1)
   {
     std::ostringstream msg;
-    msg << "the input array '" << (array->GetName() ? array->GetName() : "")
-        << "' has " << array->GetNumberOfComponents() << " components; counts need one";
+    msg << "the input array '" << (array->GetName() ? array->GetName() : "") << "' has "
+        << array->GetNumberOfComponents() << " components; counts need one";
     error = msg.str();
     return false;
   }
@@ -299,7 +301,7 @@ int vtkBlueNoiseSpectrum::RequestInformation(
     }
   }
   vtkInformation* imageInfo = outputVector->GetInformationObject(1);
-  if (dims[0] >= 1 && dims[1] >= 1 && dims[2] >= 1)
+  if (this->GenerateSpectrumImage && dims[0] >= 1 && dims[1] >= 1 && dims[2] >= 1)
   {
     int extent[6];
     double spacing[3], origin[3];
@@ -408,17 +410,26 @@ int vtkBlueNoiseSpectrum::RequestData(
     {
       int association = vtkDataObject::FIELD_ASSOCIATION_POINTS;
       r.Array = this->GetInputArrayToProcess(0, image, association);
+      vtkInformation* selection = this->GetInputArrayInformation(0);
+      if (!r.Array && selection->Has(vtkDataObject::FIELD_NAME()) &&
+        std::string(selection->Get(vtkDataObject::FIELD_NAME())).empty())
+      {
+        // An empty name (ParaView before an array is picked): the active scalars.
+        r.Array = image->GetPointData()->GetScalars();
+        association = vtkDataObject::FIELD_ASSOCIATION_POINTS;
+      }
       if (!CheckImageArray(r.Array, association, r.CellArray, error))
       {
         vtkErrorMacro("Realisation " << i << ": " << error << ".");
         return 0;
       }
-      const vtkIdType expected = r.CellArray ? image->GetNumberOfCells() : image->GetNumberOfPoints();
+      const vtkIdType expected =
+        r.CellArray ? image->GetNumberOfCells() : image->GetNumberOfPoints();
       if (r.Array->GetNumberOfTuples() != expected)
       {
         vtkErrorMacro("Realisation " << i << ": the input array has "
-                                     << r.Array->GetNumberOfTuples() << " values for "
-                                     << expected << (r.CellArray ? " cells." : " points."));
+                                     << r.Array->GetNumberOfTuples() << " values for " << expected
+                                     << (r.CellArray ? " cells." : " points."));
         return 0;
       }
     }
@@ -517,8 +528,8 @@ int vtkBlueNoiseSpectrum::RequestData(
     if (!std::equal(d, d + 3, dims))
     {
       vtkErrorMacro("Realisation " << i << " has a " << d[0] << " x " << d[1] << " x " << d[2]
-                                   << " grid but realisation 0 has " << dims[0] << " x "
-                                   << dims[1] << " x " << dims[2]
+                                   << " grid but realisation 0 has " << dims[0] << " x " << dims[1]
+                                   << " x " << dims[2]
                                    << ": all realisations must share one grid shape.");
       return 0;
     }
@@ -545,6 +556,7 @@ int vtkBlueNoiseSpectrum::RequestData(
       return 1;
     }
     const Realisation& r = realisations[i];
+    const vtkIdType outsideBefore = outside;
     bool ok = false;
     if (r.Kind == SignalKind::ImageArray)
     {
@@ -642,7 +654,13 @@ int vtkBlueNoiseSpectrum::RequestData(
     }
     if (!ok)
     {
-      vtkErrorMacro("Realisation " << i << ": " << error << ".");
+      std::string reason = error;
+      if (outside > outsideBefore)
+      {
+        reason += " (" + std::to_string(outside - outsideBefore) +
+          " samples lie outside the analysis grid)";
+      }
+      vtkErrorMacro("Realisation " << i << ": " << reason << ".");
       return 0;
     }
     this->UpdateProgress(0.8 * static_cast<double>(i + 1) / realisations.size());

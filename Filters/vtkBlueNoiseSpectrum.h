@@ -60,7 +60,7 @@
  * comes from field data, the spectrum image's whole extent is known only once
  * the filter has executed; RequestInformation announces the best guess (the
  * input image's extent or GridDimensions) and RequestData corrects it.
- * Memory is about 24 bytes per voxel of the grid, plus 4 bytes per voxel for
+ * Memory is about 12 bytes per voxel of the grid, plus 4 bytes per voxel for
  * binned point inputs and 8 per voxel for the spectrum image.
  *
  * @sa vtkBlueNoiseSpectrumKernel vtkErrorDiffusionSampler
@@ -71,7 +71,6 @@
 #include "vtkFiltersBlueNoiseModule.h" // for export macro
 #include "vtkTableAlgorithm.h"
 
-class vtkDataSet;
 class vtkImageData;
 
 class VTKFILTERSBLUENOISE_EXPORT vtkBlueNoiseSpectrum : public vtkTableAlgorithm

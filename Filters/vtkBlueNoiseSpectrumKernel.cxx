@@ -33,10 +33,26 @@ void SetError(std::string* error, const std::string& message)
   }
 }
 
+// Transforms per grid shape: a 2D real-to-complex transform of one z slab
+// (in place, rows padded to 2 * (Lx / 2 + 1) doubles) and a batch of
+// ColumnBlock 1D transforms along z over a small gathered block. FFTW's one-call
+// 3D plan strides through the whole volume for its z pass; at 256^3 with
+// FFTW_ESTIMATE that is 4 times slower than transforming z in blocks that stay
+// in cache (and as fast as an FFTW_MEASURE plan, without its seconds of planning).
+constexpr int ColumnBlock = 8;
+
+struct TransformPlans
+{
+  fftw_plan Slab = nullptr;
+  fftw_plan Columns = nullptr;
+};
+
 // FFTW's planner is not thread-safe, so every plan is made (and destroyed) under
 // one lock; executing a plan on new arrays is thread-safe. Plans are kept for
 // the life of the process: an optimiser evaluates one or two shapes many
-// thousand times, and a plan is small next to its buffers.
+// thousand times, and a plan is small next to its buffers. Every buffer comes
+// from fftw_malloc and slabs start at multiples of 64 bytes, so all arrays
+// share the alignment the plans were made with.
 class PlanCache
 {
 public:
@@ -46,7 +62,7 @@ public:
     return cache;
   }
 
-  fftw_plan Get(const int dims[3], double* buffer)
+  TransformPlans Get(const int dims[3], double* slab, fftw_complex* columns)
   {
     std::lock_guard<std::mutex> lock(this->Mutex);
     const std::array<int, 3> key{ { dims[0], dims[1], dims[2] } };
@@ -55,15 +71,20 @@ public:
     {
       return it->second;
     }
-    // FFTW's arrays are row-major, last index fastest: (Lz, Ly, Lx) for an
-    // x-fastest volume. FFTW_ESTIMATE leaves the buffer untouched while planning.
-    fftw_plan plan = fftw_plan_dft_r2c_3d(dims[2], dims[1], dims[0], buffer,
-      reinterpret_cast<fftw_complex*>(buffer), FFTW_ESTIMATE | FFTW_DESTROY_INPUT);
-    if (plan)
+    // FFTW_ESTIMATE leaves the buffers untouched while planning.
+    TransformPlans plans;
+    plans.Slab = fftw_plan_dft_r2c_2d(
+      dims[1], dims[0], slab, reinterpret_cast<fftw_complex*>(slab), FFTW_ESTIMATE);
+    const int n[1] = { dims[2] };
+    plans.Columns = fftw_plan_many_dft(1, n, ColumnBlock, columns, nullptr, ColumnBlock, 1, columns,
+      nullptr, ColumnBlock, 1, FFTW_FORWARD, FFTW_ESTIMATE);
+    if (plans.Slab && plans.Columns)
     {
-      this->Plans.emplace(key, plan);
+      this->Plans.emplace(key, plans);
+      return plans;
     }
-    return plan;
+    Destroy(plans);
+    return TransformPlans();
   }
 
   PlanCache(const PlanCache&) = delete;
@@ -75,12 +96,24 @@ private:
   {
     for (auto& entry : this->Plans)
     {
-      fftw_destroy_plan(entry.second);
+      Destroy(entry.second);
+    }
+  }
+
+  static void Destroy(const TransformPlans& plans)
+  {
+    if (plans.Slab)
+    {
+      fftw_destroy_plan(plans.Slab);
+    }
+    if (plans.Columns)
+    {
+      fftw_destroy_plan(plans.Columns);
     }
   }
 
   std::mutex Mutex;
-  std::map<std::array<int, 3>, fftw_plan> Plans;
+  std::map<std::array<int, 3>, TransformPlans> Plans;
 };
 
 // Per-shell sums for one pass over the half spectrum. Counts are integers (a
@@ -180,10 +213,14 @@ vtkBlueNoiseSpectrumKernel::~vtkBlueNoiseSpectrumKernel()
 void vtkBlueNoiseSpectrumKernel::ReleaseBuffers()
 {
   fftw_free(this->Transform);
+  fftw_free(this->Columns);
   fftw_free(this->PowerSum);
   this->Transform = nullptr;
+  this->Columns = nullptr;
   this->PowerSum = nullptr;
-  this->Plan = nullptr;
+  this->SlabPlan = nullptr;
+  this->ColumnPlan = nullptr;
+  this->SlabStride = 0;
   this->HalfSize = 0;
   std::fill(this->Dimensions, this->Dimensions + 3, 0);
 }
@@ -207,32 +244,40 @@ bool vtkBlueNoiseSpectrumKernel::SetDimensions(int lx, int ly, int lz, std::stri
     return false;
   }
   const std::size_t halfX = static_cast<std::size_t>(lx) / 2 + 1;
-  const std::size_t rows = static_cast<std::size_t>(ly) * static_cast<std::size_t>(lz);
-  if (rows > std::numeric_limits<std::size_t>::max() / (2 * halfX * sizeof(double)))
+  // Slabs start at multiples of 8 doubles (64 bytes) to keep one alignment.
+  const std::size_t slabStride = (static_cast<std::size_t>(ly) * 2 * halfX + 7) / 8 * 8;
+  if (slabStride > std::numeric_limits<std::size_t>::max() / sizeof(double) / 2 / lz)
   {
     SetError(error, "grid dimensions are too large to address");
     return false;
   }
-  const std::size_t half = rows * halfX;
-  this->Transform = static_cast<double*>(fftw_malloc(2 * half * sizeof(double)));
+  const std::size_t half = static_cast<std::size_t>(ly) * lz * halfX;
+  this->Transform = static_cast<double*>(fftw_malloc(slabStride * lz * sizeof(double)));
+  this->Columns = static_cast<double*>(fftw_malloc(2 * ColumnBlock * sizeof(double) * lz));
   this->PowerSum = static_cast<double*>(fftw_malloc(half * sizeof(double)));
-  if (!this->Transform || !this->PowerSum)
+  if (!this->Transform || !this->Columns || !this->PowerSum)
   {
     this->ReleaseBuffers();
     std::ostringstream msg;
-    msg << "cannot allocate " << 3 * half * sizeof(double) << " bytes for a " << lx << " x " << ly
-        << " x " << lz << " spectrum";
+    msg << "cannot allocate " << (slabStride * lz + half) * sizeof(double) << " bytes for a " << lx
+        << " x " << ly << " x " << lz << " spectrum";
     SetError(error, msg.str());
     return false;
   }
+  // The last block of a pass transforms some stale lanes; keep them defined.
+  std::fill(this->Columns, this->Columns + 2 * ColumnBlock * static_cast<std::size_t>(lz), 0.0);
   const int dims[3] = { lx, ly, lz };
-  this->Plan = PlanCache::Instance().Get(dims, this->Transform);
-  if (!this->Plan)
+  const TransformPlans plans = PlanCache::Instance().Get(
+    dims, this->Transform, reinterpret_cast<fftw_complex*>(this->Columns));
+  if (!plans.Slab)
   {
     this->ReleaseBuffers();
     SetError(error, "FFTW could not plan the transform");
     return false;
   }
+  this->SlabPlan = plans.Slab;
+  this->ColumnPlan = plans.Columns;
+  this->SlabStride = slabStride;
   std::copy(dims, dims + 3, this->Dimensions);
   this->HalfSize = half;
   return true;
@@ -294,22 +339,25 @@ bool vtkBlueNoiseSpectrumKernel::AddRealisationTemplate(const T* values, std::st
   const int ly = this->Dimensions[1];
   const int lz = this->Dimensions[2];
   const std::size_t padX = 2 * (static_cast<std::size_t>(lx) / 2 + 1);
+  const auto slabPlan = static_cast<fftw_plan>(this->SlabPlan);
   const T first = values[0];
   double n = 0.0;
   bool constant = true;
+  // Each z slab is filled and transformed in x and y while it is in cache.
   for (int z = 0; z < lz; ++z)
   {
+    double* slab = this->Transform + z * this->SlabStride;
     for (int y = 0; y < ly; ++y)
     {
-      const std::size_t row = static_cast<std::size_t>(z) * ly + y;
-      const T* src = values + row * lx;
-      double* dst = this->Transform + row * padX;
+      const T* src = values + (static_cast<std::size_t>(z) * ly + y) * lx;
+      double* dst = slab + y * padX;
       double rowSum = 0.0;
       bool rowConstant = true;
       for (int x = 0; x < lx; ++x)
       {
         const double v = static_cast<double>(src[x]);
-        if (std::is_floating_point<T>::value && !(v >= 0.0 && v <= std::numeric_limits<double>::max()))
+        if (std::is_floating_point<T>::value &&
+          !(v >= 0.0 && v <= std::numeric_limits<double>::max()))
         {
           std::ostringstream msg;
           msg << "the count at voxel (" << x << ", " << y << ", " << z << ") is " << v
@@ -324,10 +372,12 @@ bool vtkBlueNoiseSpectrumKernel::AddRealisationTemplate(const T* values, std::st
       n += rowSum;
       constant &= rowConstant;
     }
+    fftw_execute_dft_r2c(slabPlan, slab, reinterpret_cast<fftw_complex*>(slab));
   }
   if (n <= 0.0)
   {
-    SetError(error, "the realisation has no points (N = 0): the spectrum P = |B|^2 / N is undefined");
+    SetError(
+      error, "the realisation has no points (N = 0): the spectrum P = |B|^2 / N is undefined");
     return false;
   }
 
@@ -344,24 +394,31 @@ bool vtkBlueNoiseSpectrumKernel::AddRealisationTemplate(const T* values, std::st
   }
   else
   {
-    fftw_execute_dft_r2c(static_cast<fftw_plan>(this->Plan), this->Transform,
-      reinterpret_cast<fftw_complex*>(this->Transform));
+    // z transforms over blocks of ColumnBlock (kx, ky) columns gathered from
+    // the slabs; the power goes straight from the block to the sum.
+    const auto columnPlan = static_cast<fftw_plan>(this->ColumnPlan);
+    auto* block = reinterpret_cast<fftw_complex*>(this->Columns);
+    const std::size_t columns = this->HalfSize / lz;
     const double invN = 1.0 / n;
-    const double* c = this->Transform;
-    double* power = this->PowerSum;
-    const std::size_t half = this->HalfSize;
-    if (firstRealisation)
+    for (std::size_t c0 = 0; c0 < columns; c0 += ColumnBlock)
     {
-      for (std::size_t i = 0; i < half; ++i)
+      const std::size_t width = std::min<std::size_t>(ColumnBlock, columns - c0);
+      for (int z = 0; z < lz; ++z)
       {
-        power[i] = (c[2 * i] * c[2 * i] + c[2 * i + 1] * c[2 * i + 1]) * invN;
+        const auto* slab =
+          reinterpret_cast<const fftw_complex*>(this->Transform + z * this->SlabStride);
+        std::memcpy(block + z * ColumnBlock, slab + c0, width * sizeof(fftw_complex));
       }
-    }
-    else
-    {
-      for (std::size_t i = 0; i < half; ++i)
+      fftw_execute_dft(columnPlan, block, block);
+      for (int z = 0; z < lz; ++z)
       {
-        power[i] += (c[2 * i] * c[2 * i] + c[2 * i + 1] * c[2 * i + 1]) * invN;
+        const fftw_complex* b = block + z * ColumnBlock;
+        double* power = this->PowerSum + z * columns + c0;
+        for (std::size_t i = 0; i < width; ++i)
+        {
+          const double p = (b[i][0] * b[i][0] + b[i][1] * b[i][1]) * invN;
+          power[i] = firstRealisation ? p : power[i] + p;
+        }
       }
     }
   }
@@ -404,7 +461,10 @@ bool vtkBlueNoiseSpectrumKernel::Compute(Result& out, std::string* error) const
   vtkSMPThreadLocal<Accumulator> locals;
   const double* power = this->PowerSum;
   const bool evenX = (lx % 2 == 0);
-  vtkSMPTools::For(0, static_cast<vtkIdType>(ly) * lz, [&](vtkIdType beginRow, vtkIdType endRow) {
+  // At least 2^18 samples per task: below that, threads cost more than the pass.
+  const vtkIdType rows = static_cast<vtkIdType>(ly) * lz;
+  const vtkIdType grain = std::max<vtkIdType>(1, (vtkIdType(1) << 18) / halfX);
+  vtkSMPTools::For(0, rows, grain, [&](vtkIdType beginRow, vtkIdType endRow) {
     Accumulator& acc = locals.Local();
     if (acc.Shells.empty())
     {
@@ -499,8 +559,9 @@ bool vtkBlueNoiseSpectrumKernel::Compute(Result& out, std::string* error) const
     out.Frequency[i] = static_cast<double>(n) / lmin;
     out.RadialPower[i] = mean;
     out.Anisotropy[i] = anisotropy;
-    out.AnisotropyDB[i] =
-      anisotropy > 0.0 ? std::max(AnisotropyFloorDB, 10.0 * std::log10(anisotropy)) : AnisotropyFloorDB;
+    out.AnisotropyDB[i] = anisotropy > 0.0
+      ? std::max(AnisotropyFloorDB, 10.0 * std::log10(anisotropy))
+      : AnisotropyFloorDB;
     const auto segmentMean = [&](int k) {
       return s.SegmentCount[k] > 0 ? s.SegmentSum[k] * invR / s.SegmentCount[k] : 0.0;
     };
@@ -524,7 +585,8 @@ bool vtkBlueNoiseSpectrumKernel::Compute(Result& out, std::string* error) const
       yz.push_back(out.SrapsYZ[n - 1]);
     }
   }
-  const double correlation = (Correlation(xy, xz) + Correlation(xy, yz) + Correlation(xz, yz)) / 3.0;
+  const double correlation =
+    (Correlation(xy, xz) + Correlation(xy, yz) + Correlation(xz, yz)) / 3.0;
 
   out.Dimensions[0] = lx;
   out.Dimensions[1] = ly;
@@ -555,8 +617,8 @@ bool vtkBlueNoiseSpectrumKernel::GetCentredPowerSpectrum(std::vector<double>& ou
     out.clear();
     return false;
   }
-  out.resize(static_cast<std::size_t>(this->Dimensions[0]) * this->Dimensions[1] *
-    this->Dimensions[2]);
+  out.resize(
+    static_cast<std::size_t>(this->Dimensions[0]) * this->Dimensions[1] * this->Dimensions[2]);
   return this->GetCentredPowerSpectrum(out.data());
 }
 
@@ -581,8 +643,8 @@ bool vtkBlueNoiseSpectrumKernel::GetCentredPowerSpectrum(double* out) const
       const int ky = (j - ly / 2 + ly) % ly;
       // Frequencies with kx > Lx / 2 are the conjugate mirrors of stored ones.
       const double* direct = this->PowerSum + (static_cast<std::size_t>(kz) * ly + ky) * halfX;
-      const double* mirror = this->PowerSum +
-        (static_cast<std::size_t>((lz - kz) % lz) * ly + (ly - ky) % ly) * halfX;
+      const double* mirror =
+        this->PowerSum + (static_cast<std::size_t>((lz - kz) % lz) * ly + (ly - ky) % ly) * halfX;
       for (int i = 0; i < lx; ++i)
       {
         const int kx = (i - lx / 2 + lx) % lx;

@@ -19,9 +19,10 @@
  * - Radial shells. Lmin = min(Lx, Ly, Lz); a frequency lies on shell
  *   n = floor(Lmin * |f| + 0.5), evaluated in double precision as
  *   sqrt(((kz/Lz)^2 + (ky/Ly)^2) + (kx/Lx)^2) * Lmin (for cubic grids this is
- *   round(|k|), which never ties; on other grids an exact half goes up). Shell n has frequency n / Lmin. Shells
- *   1 .. nmax are reported, nmax being the shell of the grid's corner frequency;
- *   shell 0 holds only DC and is left out.
+ *   round(|k|), which never ties; on other grids an exact half goes up).
+ *   Shell n has frequency n / Lmin. Shells 1 .. nmax are reported, nmax being
+ *   the shell of the grid's corner frequency; shell 0 holds only DC and is
+ *   left out.
  * - Per shell (Eq. 2-4): RadialPower = mean of P over the shell; Anisotropy =
  *   unbiased sample variance / RadialPower^2 (0 when the shell has fewer than 2
  *   samples or a mean of 0); AnisotropyDB = 10 log10(Anisotropy), floored at
@@ -60,12 +61,13 @@
  * no power off DC: Compute() succeeds with Result::Warning set, L = 0, all
  * anisotropies 0, C = 0 and S = 1. No reported value is ever NaN.
  *
- * Cost: one real-to-complex FFTW transform per realisation (in place; FFTW plans
- * are cached per grid shape for the whole process) and one pass over the half
- * spectrum per Compute(); memory is one complex half spectrum (the transform
- * buffer) and one real half spectrum (the accumulated power), about
- * 24 * V bytes. A kernel keeps its buffers across Reset() and SetDimensions()
- * with an unchanged shape.
+ * Cost: per realisation, a real-to-complex FFT done as in-cache 2D transforms
+ * of the z slabs followed by z transforms over small blocks of columns (FFTW,
+ * plans cached per grid shape for the whole process; about 0.16 s for 256^3 on
+ * one core), then per Compute() one pass over the half spectrum. Memory is one
+ * complex half spectrum (the transform buffer) and one real half spectrum (the
+ * accumulated power), about 12 * V bytes. A kernel keeps its buffers across
+ * Reset() and SetDimensions() with an unchanged shape.
  *
  * Thread safety: distinct kernels may be used from different threads at the
  * same time (plan creation is serialised internally); one kernel must not be
@@ -174,12 +176,16 @@ private:
   int ConstantRealisations = 0; // realisations with no power off DC
   double PointSum = 0.0;        // sum of N over the realisations
   std::size_t HalfSize = 0;     // Lz * Ly * (Lx / 2 + 1)
-  // In-place r2c buffer: real input with rows padded to 2 * (Lx / 2 + 1),
-  // complex half spectrum on output (fftw_malloc'ed, hence SIMD aligned like
-  // the buffer the cached plan was made with).
+  std::size_t SlabStride = 0;   // doubles from one z slab of Transform to the next
+  // Transform: per z slab, the real input with rows padded to 2 * (Lx / 2 + 1)
+  // doubles, transformed in place in x and y. Columns: a few z columns being
+  // transformed in z. Both fftw_malloc'ed, so aligned like the buffers the
+  // cached plans were made with.
   double* Transform = nullptr;
+  double* Columns = nullptr;
   double* PowerSum = nullptr; // sum over realisations of |B|^2 / N, half spectrum
-  void* Plan = nullptr;       // fftw_plan owned by the process-wide cache
+  void* SlabPlan = nullptr;   // fftw_plan, owned by the process-wide cache
+  void* ColumnPlan = nullptr; // fftw_plan, owned by the process-wide cache
 };
 
 #endif

@@ -91,9 +91,24 @@ void BM_SpectrumEvaluate(benchmark::State& state)
 }
 }
 
-BENCHMARK(BM_SpectrumKernel)->Arg(64)->Arg(128)->Arg(256)->Unit(benchmark::kMillisecond);
-BENCHMARK(BM_SpectrumTransform)->Arg(64)->Arg(128)->Arg(256)->Unit(benchmark::kMillisecond);
-BENCHMARK(BM_SpectrumCompute)->Arg(64)->Arg(128)->Arg(256)->Unit(benchmark::kMillisecond);
-BENCHMARK(BM_SpectrumEvaluate)->Arg(64)->Arg(128)->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_SpectrumKernel)
+  ->Arg(64)
+  ->Arg(128)
+  ->Arg(256)
+  ->Unit(benchmark::kMillisecond)
+  ->UseRealTime();
+BENCHMARK(BM_SpectrumTransform)
+  ->Arg(64)
+  ->Arg(128)
+  ->Arg(256)
+  ->Unit(benchmark::kMillisecond)
+  ->UseRealTime();
+BENCHMARK(BM_SpectrumCompute)
+  ->Arg(64)
+  ->Arg(128)
+  ->Arg(256)
+  ->Unit(benchmark::kMillisecond)
+  ->UseRealTime();
+BENCHMARK(BM_SpectrumEvaluate)->Arg(64)->Arg(128)->Unit(benchmark::kMillisecond)->UseRealTime();
 
 BENCHMARK_MAIN();

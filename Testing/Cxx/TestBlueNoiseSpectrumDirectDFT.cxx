@@ -254,8 +254,8 @@ void Compare(const int dims[3], int realisations, bool masks, double w, std::mt1
   double worst = 0.0;
   for (std::size_t i = 0; i < spectrum.size(); ++i)
   {
-    worst = std::max(worst, std::abs(spectrum[i] - expectedSpectrum[i]) /
-        std::max(1.0, std::abs(expectedSpectrum[i])));
+    worst = std::max(worst,
+      std::abs(spectrum[i] - expectedSpectrum[i]) / std::max(1.0, std::abs(expectedSpectrum[i])));
   }
   Check(worst <= 1e-9, what + ": centred spectrum differs by " + Str(worst));
 }

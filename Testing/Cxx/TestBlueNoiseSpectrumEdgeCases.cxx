@@ -91,8 +91,7 @@ void KernelErrors()
       error.find("finite and non-negative") != std::string::npos,
     "negative count: '" + error + "'");
   bad[17] = std::numeric_limits<float>::quiet_NaN();
-  Check(!kernel.AddRealisation(bad.data(), &error) &&
-      error.find("(1, 2, 0)") != std::string::npos,
+  Check(!kernel.AddRealisation(bad.data(), &error) && error.find("(1, 2, 0)") != std::string::npos,
     "NaN count names its voxel: '" + error + "'");
   bad[17] = std::numeric_limits<float>::infinity();
   Check(!kernel.AddRealisation(bad.data(), &error), "infinite count accepted");
@@ -245,6 +244,26 @@ void FilterErrors()
   origin->SetNumberOfTuples(1);
   malformed->GetFieldData()->AddArray(origin);
   ExpectFilterError(malformed, "SamplingGridOrigin has 2 values", "malformed field data");
+
+  // Every point outside the grid: N = 0, and the error says why.
+  vtkNew<vtkPolyData> away;
+  vtkNew<vtkPoints> far;
+  far->InsertNextPoint(5.0, 0.5, 0.5);
+  far->InsertNextPoint(-3.0, 0.5, 0.5);
+  away->SetPoints(far);
+  vtkNew<vtkBlueNoiseSpectrum> filter;
+  vtkNew<MessageObserver> observer;
+  observer->Watch(filter);
+  observer->Watch(filter->GetExecutive());
+  filter->SetInputData(away);
+  filter->SetGridDimensions(8, 8, 8);
+  filter->SetGridBounds(0.0, 1.0, 0.0, 1.0, 0.0, 1.0);
+  filter->UseGridBoundsOn();
+  filter->Update();
+  Check(observer->ErrorContains("N = 0") &&
+      observer->ErrorContains("2 samples lie outside the analysis grid"),
+    "all points outside: '" + observer->Errors + "'");
+  Check(OutputsEmpty(filter), "all points outside: outputs not empty");
 }
 
 void FilterSinglePointAndFullMask()
@@ -263,7 +282,8 @@ void FilterSinglePointAndFullMask()
   Result r;
   if (ResultFromTable(filter->GetOutput(), r))
   {
-    Check(r.RadialPower.size() == 14, "filter, one point: " + Str(r.RadialPower.size()) + " shells");
+    Check(
+      r.RadialPower.size() == 14, "filter, one point: " + Str(r.RadialPower.size()) + " shells");
     for (std::size_t i = 0; i < r.RadialPower.size(); ++i)
     {
       Check(std::abs(r.RadialPower[i] - 1.0) <= 1e-9 && std::abs(r.Anisotropy[i]) <= 1e-9,

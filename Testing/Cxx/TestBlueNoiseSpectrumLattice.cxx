@@ -12,8 +12,8 @@ namespace
 {
 void CheckLattice(const int dims[3], int s, const int offset[3])
 {
-  const std::string what = "lattice s=" + Str(s) + " on " + Str(dims[0]) + "x" + Str(dims[1]) +
-    "x" + Str(dims[2]);
+  const std::string what =
+    "lattice s=" + Str(s) + " on " + Str(dims[0]) + "x" + Str(dims[1]) + "x" + Str(dims[2]);
   std::vector<unsigned char> mask(Voxels(dims), 0);
   double n = 0.0;
   for (int z = offset[2]; z < dims[2]; z += s)

@@ -79,9 +79,10 @@ vtkSmartPointer<vtkPolyData> SamplerPoints(const std::vector<unsigned char>& mas
   }
   auto data = vtkSmartPointer<vtkPolyData>::New();
   data->SetPoints(points);
-  const double extent[6] = { static_cast<double>(Lower[0]), static_cast<double>(Lower[0] + Dims[0] - 1),
-    static_cast<double>(Lower[1]), static_cast<double>(Lower[1] + Dims[1] - 1),
-    static_cast<double>(Lower[2]), static_cast<double>(Lower[2] + Dims[2] - 1) };
+  const double extent[6] = { static_cast<double>(Lower[0]),
+    static_cast<double>(Lower[0] + Dims[0] - 1), static_cast<double>(Lower[1]),
+    static_cast<double>(Lower[1] + Dims[1] - 1), static_cast<double>(Lower[2]),
+    static_cast<double>(Lower[2] + Dims[2] - 1) };
   AddField<vtkDoubleArray>(data, "SamplingGridOrigin", 3, Origin);
   AddField<vtkDoubleArray>(data, "SamplingGridSpacing", 3, Spacing);
   AddField<vtkIntArray>(data, "SamplingGridExtent", 6, extent);
@@ -92,7 +93,8 @@ vtkSmartPointer<vtkPolyData> SamplerPoints(const std::vector<unsigned char>& mas
 // The mask as an image on the same grid: the active scalars, or with `cells`
 // a cell-data array named "cellmask".
 template <typename ArrayT>
-vtkSmartPointer<vtkImageData> MaskImage(const std::vector<unsigned char>& mask, bool cells)
+vtkSmartPointer<vtkImageData> MaskImage(
+  const std::vector<unsigned char>& mask, bool cells, const double* direction = Direction)
 {
   vtkNew<ArrayT> values;
   values->SetNumberOfTuples(static_cast<vtkIdType>(mask.size()));
@@ -106,7 +108,7 @@ vtkSmartPointer<vtkImageData> MaskImage(const std::vector<unsigned char>& mask, 
     Lower[2], Lower[2] + Dims[2] - 1 + c);
   image->SetOrigin(Origin[0], Origin[1], Origin[2]);
   image->SetSpacing(Spacing[0], Spacing[1], Spacing[2]);
-  image->SetDirectionMatrix(Direction);
+  image->SetDirectionMatrix(direction);
   if (cells)
   {
     values->SetName("cellmask");
@@ -151,28 +153,36 @@ void CheckFilter(vtkBlueNoiseSpectrum* filter, const Result& expected, const std
   }
 }
 
-void CheckImage(vtkImageData* image, const int dims[3], const std::vector<double>& spectrum,
-  const std::string& what)
+// Spacing 1/L, and the point of index floor(L/2) at frequency 0.
+bool CheckImageGeometry(vtkImageData* image, const int dims[3], const std::string& what)
 {
   int d[3];
   image->GetDimensions(d);
   if (!Check(d[0] == dims[0] && d[1] == dims[1] && d[2] == dims[2],
         what + ": image dimensions " + Str(d[0]) + " " + Str(d[1]) + " " + Str(d[2])))
   {
-    return;
+    return false;
   }
   for (int a = 0; a < 3; ++a)
   {
     CheckClose(image->GetSpacing()[a], 1.0 / dims[a], 1e-15, what + " spacing");
-    CheckClose(image->GetOrigin()[a], -static_cast<double>(dims[a] / 2) / dims[a], 1e-15,
-      what + " origin");
   }
-  // The point of index floor(L/2) is the zero frequency.
   double centre[3];
-  const int c[3] = { dims[0] / 2, dims[1] / 2, dims[2] / 2 };
-  image->GetPoint(image->ComputePointId(const_cast<int*>(c)), centre);
-  Check(std::abs(centre[0]) + std::abs(centre[1]) + std::abs(centre[2]) < 1e-15,
-    what + ": index floor(L/2) is not at frequency 0");
+  int c[3] = { dims[0] / 2, dims[1] / 2, dims[2] / 2 };
+  image->GetPoint(image->ComputePointId(c), centre);
+  return Check(std::abs(centre[0]) + std::abs(centre[1]) + std::abs(centre[2]) < 1e-15,
+    what + ": index floor(L/2) is at " + Str(centre[0]) + " " + Str(centre[1]) + " " +
+      Str(centre[2]) + ", not at frequency 0");
+}
+
+void CheckImage(vtkImageData* image, const int dims[3], const std::vector<double>& spectrum,
+  const std::string& what)
+{
+  if (!CheckImageGeometry(image, dims, what))
+  {
+    return;
+  }
+  int c[3] = { dims[0] / 2, dims[1] / 2, dims[2] / 2 };
   vtkDataArray* power = image->GetPointData()->GetArray("Power");
   if (!Check(power && power->GetNumberOfTuples() == static_cast<vtkIdType>(spectrum.size()),
         what + ": no Power array of the right size"))
@@ -185,8 +195,7 @@ void CheckImage(vtkImageData* image, const int dims[3], const std::vector<double
     same = same && Close(power->GetComponent(static_cast<vtkIdType>(i), 0), spectrum[i], 1e-12);
   }
   Check(same, what + ": Power differs from the kernel's centred spectrum");
-  Check(power->GetComponent(image->ComputePointId(const_cast<int*>(c)), 0) == 0.0,
-    what + ": DC is not 0");
+  Check(power->GetComponent(image->ComputePointId(c), 0) == 0.0, what + ": DC is not 0");
 }
 }
 
@@ -239,12 +248,43 @@ int main()
     vtkNew<vtkBlueNoiseSpectrum> filter;
     filter->SetInputData(MaskImage<vtkShortArray>(mask, false));
     CheckFilter(filter, single, "int16 image");
+    // ParaView's empty array name before a pick means the active scalars.
+    filter->SetInputArrayToProcess(0, 0, 0, vtkDataObject::FIELD_ASSOCIATION_POINTS, "");
+    CheckFilter(filter, single, "empty array name");
   }
   {
     vtkNew<vtkBlueNoiseSpectrum> filter;
     filter->SetInputData(MaskImage<vtkDoubleArray>(mask, true));
     filter->SetInputArrayToProcess(0, 0, 0, vtkDataObject::FIELD_ASSOCIATION_CELLS, "cellmask");
     CheckFilter(filter, single, "cell-data image");
+  }
+
+  // Images with UseInputGrid off: their point (or cell-centre) positions,
+  // weighted by the values, binned to GridDimensions over the bounds.
+  {
+    const double identity[9] = { 1, 0, 0, 0, 1, 0, 0, 0, 1 };
+    vtkNew<vtkBlueNoiseSpectrum> filter;
+    filter->SetInputData(MaskImage<vtkUnsignedCharArray>(mask, false, identity));
+    filter->UseInputGridOff();
+    filter->SetGridDimensions(Dims[0], Dims[1], Dims[2]);
+    CheckFilter(filter, single, "image points over the bounds");
+
+    vtkNew<vtkBlueNoiseSpectrum> cells;
+    cells->SetInputData(MaskImage<vtkDoubleArray>(mask, true, identity));
+    cells->SetInputArrayToProcess(0, 0, 0, vtkDataObject::FIELD_ASSOCIATION_CELLS, "cellmask");
+    cells->UseInputGridOff();
+    cells->SetGridDimensions(Dims[0], Dims[1], Dims[2]);
+    // The cell centres' lattice, moved a quarter voxel so that a point half a
+    // voxel off its centre would not tie.
+    double centres[6];
+    for (int a = 0; a < 3; ++a)
+    {
+      centres[2 * a] = Origin[a] + (Lower[a] + 0.75) * Spacing[a];
+      centres[2 * a + 1] = Origin[a] + (Lower[a] + Dims[a] - 0.25) * Spacing[a];
+    }
+    cells->SetGridBounds(centres);
+    cells->UseGridBoundsOn();
+    CheckFilter(cells, single, "image cell centres over GridBounds");
   }
 
   // Two realisations: two connections, and a multiblock of two.
@@ -296,16 +336,18 @@ int main()
     vtkNew<vtkBlueNoiseSpectrum> forced;
     forced->SetInputData(SamplerPoints(mask));
     forced->UseInputGridOff();
-    forced->SetGridDimensions(8, 10, 12);
+    forced->SetGridDimensions(9, 10, 11);
     forced->Update();
     Result r;
     if (ResultFromTable(forced->GetOutput(), r))
     {
-      Check(r.Frequency.size() == static_cast<std::size_t>(std::lround(8 * std::sqrt(
-                                    0.25 + 0.25 + 0.25))),
-        "UseInputGrid off: " + Str(r.Frequency.size()) + " shells on an 8x10x12 grid");
+      // The corner frequency (4/9, 1/2, 5/11) lies on shell round(9 |f|) = 7.
+      Check(r.Frequency.size() == 7,
+        "UseInputGrid off: " + Str(r.Frequency.size()) + " shells on a 9x10x11 grid");
       CheckClose(r.NumberOfPoints, single.NumberOfPoints, 0.0, "UseInputGrid off: N");
     }
+    const int odd[3] = { 9, 10, 11 };
+    CheckImageGeometry(forced->GetSpectrumImageOutput(), odd, "UseInputGrid off");
 
     // Grid bounds that leave points out: a warning with their number.
     vtkNew<vtkBlueNoiseSpectrum> cropped;
@@ -321,12 +363,11 @@ int main()
     {
       double x[3];
       points->GetPoint(i, x);
-      inside += (x[0] <= 20.0 + 10.0 / 14 && x[1] <= 0.0 + 5.0 / 14 && x[2] <= 20.0 + 20.0 / 14)
-        ? 1
-        : 0;
+      inside +=
+        (x[0] <= 20.0 + 10.0 / 14 && x[1] <= 0.0 + 5.0 / 14 && x[2] <= 20.0 + 20.0 / 14) ? 1 : 0;
     }
-    const std::string count = Str(points->GetNumberOfPoints() - inside) + " of " +
-      Str(points->GetNumberOfPoints());
+    const std::string count =
+      Str(points->GetNumberOfPoints() - inside) + " of " + Str(points->GetNumberOfPoints());
     Check(observer->Warnings.find(count) != std::string::npos,
       "cropped grid: expected a warning about " + count + " points, got '" + observer->Warnings +
         "'");

@@ -11,8 +11,8 @@ namespace
 {
 void CheckSinglePoint(const int dims[3], const int point[3])
 {
-  const std::string what = "single point on " + Str(dims[0]) + "x" + Str(dims[1]) + "x" +
-    Str(dims[2]);
+  const std::string what =
+    "single point on " + Str(dims[0]) + "x" + Str(dims[1]) + "x" + Str(dims[2]);
   const std::size_t voxels = Voxels(dims);
   std::vector<unsigned char> mask(voxels, 0);
   mask[(static_cast<std::size_t>(point[2]) * dims[1] + point[1]) * dims[0] + point[0]] = 1;

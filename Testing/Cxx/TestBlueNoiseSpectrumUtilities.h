@@ -149,15 +149,14 @@ inline void CheckSameResult(const Result& a, const Result& b, double rel, const 
     CheckClose(a.SrapsXY[i], b.SrapsXY[i], rel, shell + " SrapsXY");
     CheckClose(a.SrapsXZ[i], b.SrapsXZ[i], rel, shell + " SrapsXZ");
     CheckClose(a.SrapsYZ[i], b.SrapsYZ[i], rel, shell + " SrapsYZ");
-    Check(a.ShellCount[i] == b.ShellCount[i], shell + " ShellCount " + Str(a.ShellCount[i]) +
-        " vs " + Str(b.ShellCount[i]));
+    Check(a.ShellCount[i] == b.ShellCount[i],
+      shell + " ShellCount " + Str(a.ShellCount[i]) + " vs " + Str(b.ShellCount[i]));
   }
   CheckClose(a.NumberOfPoints, b.NumberOfPoints, rel, what + " NumberOfPoints");
   CheckClose(a.Density, b.Density, rel, what + " Density");
   CheckClose(a.PrincipalFrequency, b.PrincipalFrequency, rel, what + " PrincipalFrequency");
   CheckClose(a.LowFrequencyRatio, b.LowFrequencyRatio, rel, what + " LowFrequencyRatio");
-  CheckClose(
-    a.SymmetryCorrelation, b.SymmetryCorrelation, rel, what + " SymmetryCorrelation");
+  CheckClose(a.SymmetryCorrelation, b.SymmetryCorrelation, rel, what + " SymmetryCorrelation");
   CheckClose(a.Symmetry, b.Symmetry, rel, what + " Symmetry");
   CheckClose(a.TargetValue, b.TargetValue, rel, what + " TargetValue");
   Check(a.Realisations == b.Realisations,
