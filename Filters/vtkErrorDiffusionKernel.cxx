@@ -107,7 +107,7 @@ void vtkErrorDiffusionKernel::Begin(int nx, int ny, int nz, int firstLayer)
   {
     this->KeyLevels.push_back(static_cast<float>(key.Level));
   }
-  if (this->BoundaryMode == BOUNDARY_STEADY_STATE)
+  if (this->BoundaryMode == BOUNDARY_STEADY_STATE && this->Method == METHOD_ERROR_DIFFUSION)
   {
     this->KeyCharges = GetSteadyStateCharges(this->Table, this->ModulationScale);
   }
@@ -210,6 +210,10 @@ vtkIdType vtkErrorDiffusionKernel::ProcessLayer(const float* density, unsigned c
   {
     return 0;
   }
+  if (this->Method == METHOD_WHITE_NOISE)
+  {
+    return this->DrawLayerIndependently(density, mask);
+  }
   const bool steady = this->BoundaryMode == BOUNDARY_STEADY_STATE;
   if (this->LayersDone == 0 && steady && this->WarmUpLayers > 0)
   {
@@ -228,6 +232,24 @@ vtkIdType vtkErrorDiffusionKernel::ProcessLayer(const float* density, unsigned c
     this->ScanLayer(density, mask, this->FirstLayer + this->LayersDone, nextLayerExists);
   std::swap(this->Current, this->Next);
   std::fill(this->Next.begin(), this->Next.end(), 0.0f);
+  ++this->LayersDone;
+  return count;
+}
+
+//------------------------------------------------------------------------------
+vtkIdType vtkErrorDiffusionKernel::DrawLayerIndependently(
+  const float* density, unsigned char* mask)
+{
+  const vtkIdType n = static_cast<vtkIdType>(this->NX) * this->NY;
+  vtkIdType count = 0;
+  for (vtkIdType i = 0; i < n; ++i)
+  {
+    const float g = density[i];
+    // g >= 1 and g <= 0 (NaN too) draw no random number, like the scan.
+    const unsigned char b = g >= 1.0f ? 1 : ((g > 0.0f && this->Random.Uniform() < g) ? 1 : 0);
+    mask[i] = b;
+    count += b;
+  }
   ++this->LayersDone;
   return count;
 }

@@ -79,6 +79,18 @@ public:
     BOUNDARY_STEADY_STATE = 1
   };
 
+  /**
+   * METHOD_ERROR_DIFFUSION is the paper's algorithm. METHOD_WHITE_NOISE is the
+   * hit-and-miss baseline (Sakamoto's PBVR): every voxel is drawn on its own
+   * with probability g from the same generator, so both methods have the same
+   * expected count for the same densities.
+   */
+  enum Methods
+  {
+    METHOD_ERROR_DIFFUSION = 0,
+    METHOD_WHITE_NOISE = 1
+  };
+
   /// The six filter targets, in the order of the table's coefficients.
   enum Target
   {
@@ -120,6 +132,7 @@ public:
   void SetModulationScale(double s) { this->ModulationScale = s; }
   void SetSeed(std::uint64_t seed) { this->Seed = seed; }
   void SetBoundaryMode(int mode) { this->BoundaryMode = mode; }
+  void SetMethod(int method) { this->Method = method; }
   void SetWarmUpLayers(int n) { this->WarmUpLayers = n < 0 ? 0 : n; }
 
   /**
@@ -158,11 +171,13 @@ private:
   vtkIdType ScanLayer(
     const float* density, unsigned char* mask, int phase, bool nextLayerExists);
   float ChargeAt(float g) const;
+  vtkIdType DrawLayerIndependently(const float* density, unsigned char* mask);
 
   vtkErrorDiffusionParameterTable Table;
   double ModulationScale = 0.5;
   std::uint64_t Seed = 0;
   int BoundaryMode = BOUNDARY_STEADY_STATE;
+  int Method = METHOD_ERROR_DIFFUSION;
   int WarmUpLayers = 8;
 
   int NX = 0;

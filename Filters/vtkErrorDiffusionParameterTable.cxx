@@ -1,4 +1,5 @@
 #include "vtkErrorDiffusionParameterTable.h"
+#include "vtkErrorDiffusionOptimizedParameters.h"
 
 #include <algorithm>
 #include <cstdlib>
@@ -70,6 +71,20 @@ vtkErrorDiffusionParameterTable vtkErrorDiffusionParameterTable::Fixed()
   k.Modulation = 1.0;
   vtkErrorDiffusionParameterTable table;
   table.SetKeys({ k });
+  return table;
+}
+
+//------------------------------------------------------------------------------
+vtkErrorDiffusionParameterTable vtkErrorDiffusionParameterTable::Optimized()
+{
+  static const vtkErrorDiffusionParameterTable table = []() {
+    std::istringstream text(vtkErrorDiffusionOptimizedParametersText);
+    vtkErrorDiffusionParameterTable parsed;
+    std::string error;
+    // The file is checked by the test of this class; a broken one leaves the table empty.
+    Parse(text, parsed, error);
+    return parsed;
+  }();
   return table;
 }
 

@@ -13,7 +13,8 @@
  *   linearly; below the first key and above the last one the nearest key holds.
  *
  * Built-in tables: Paper() is Table 1 verbatim; Fixed() is the un-optimised
- * baseline of the paper's Fig. 8 (4, 2, 4, 2, 2, 2 and m = 1).
+ * baseline of the paper's Fig. 8 (4, 2, 4, 2, 2, 2 and m = 1); Optimized() is
+ * the result of this project's own search.
  *
  * Text format (read by Parse/ReadFile, written by Write): one key per line,
  * eight numbers separated by white space or commas,
@@ -72,6 +73,12 @@ public:
 
   static vtkErrorDiffusionParameterTable Paper();
   static vtkErrorDiffusionParameterTable Fixed();
+  /**
+   * The table this project's parameter search produced (bluenoise-optimize,
+   * minimum of T(g) per key level; the search settings and the figures of
+   * every level are in Filters/vtkErrorDiffusionOptimizedParameters.txt).
+   */
+  static vtkErrorDiffusionParameterTable Optimized();
 
   /**
    * Replace the keys. Returns false (and leaves the table unchanged) when the

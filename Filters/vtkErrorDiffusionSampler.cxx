@@ -432,6 +432,10 @@ int vtkErrorDiffusionSampler::RequestData(
   {
     table = vtkErrorDiffusionParameterTable::Fixed();
   }
+  else if (this->ParameterSet == PARAMETERS_OPTIMIZED)
+  {
+    table = vtkErrorDiffusionParameterTable::Optimized();
+  }
   else if (this->ParameterSet == PARAMETERS_CUSTOM)
   {
     std::string error;
@@ -457,6 +461,7 @@ int vtkErrorDiffusionSampler::RequestData(
   kernel.SetModulationScale(this->ModulationScale);
   kernel.SetSeed(static_cast<std::uint64_t>(static_cast<unsigned int>(this->Seed)));
   kernel.SetBoundaryMode(this->BoundaryMode);
+  kernel.SetMethod(this->Method);
   kernel.SetWarmUpLayers(this->WarmUpLayers);
   kernel.Begin(nx, ny, nz, extent[4]);
 
@@ -581,6 +586,7 @@ int vtkErrorDiffusionSampler::RequestData(
 void vtkErrorDiffusionSampler::PrintSelf(ostream& os, vtkIndent indent)
 {
   this->Superclass::PrintSelf(os, indent);
+  os << indent << "Method: " << this->Method << "\n";
   os << indent << "Component: " << this->Component << "\n";
   os << indent << "DensityMapping: " << this->DensityMapping << "\n";
   os << indent << "ScalarRange: " << this->ScalarRange[0] << ", " << this->ScalarRange[1] << "\n";

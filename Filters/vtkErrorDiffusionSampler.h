@@ -80,7 +80,14 @@ public:
   {
     PARAMETERS_PAPER = 0,
     PARAMETERS_FIXED = 1,
-    PARAMETERS_CUSTOM = 2
+    PARAMETERS_CUSTOM = 2,
+    PARAMETERS_OPTIMIZED = 3
+  };
+
+  enum Methods
+  {
+    METHOD_ERROR_DIFFUSION = 0,
+    METHOD_WHITE_NOISE = 1
   };
 
   enum BoundaryModes
@@ -88,6 +95,19 @@ public:
     BOUNDARY_RENORMALIZE = 0,
     BOUNDARY_STEADY_STATE = 1
   };
+
+  ///@{
+  /**
+   * METHOD_ERROR_DIFFUSION (default): the blue-noise 3D error diffusion.
+   * METHOD_WHITE_NOISE: hit-and-miss sampling, every voxel drawn on its own
+   * with probability g (white noise, the baseline of particle-based volume
+   * rendering), with the same density mapping and the same expected count.
+   */
+  vtkSetClampMacro(Method, int, METHOD_ERROR_DIFFUSION, METHOD_WHITE_NOISE);
+  vtkGetMacro(Method, int);
+  void SetMethodToErrorDiffusion() { this->SetMethod(METHOD_ERROR_DIFFUSION); }
+  void SetMethodToWhiteNoise() { this->SetMethod(METHOD_WHITE_NOISE); }
+  ///@}
 
   ///@{
   /**
@@ -147,10 +167,12 @@ public:
   /**
    * Diffusion coefficients and modulation strengths: PARAMETERS_PAPER (Table 1
    * of the paper, default), PARAMETERS_FIXED (the un-optimised baseline of the
-   * paper's Fig. 8) or PARAMETERS_CUSTOM (read from ParameterFile, in the
-   * format described in vtkErrorDiffusionParameterTable).
+   * paper's Fig. 8), PARAMETERS_CUSTOM (read from ParameterFile, in the
+   * format described in vtkErrorDiffusionParameterTable) or
+   * PARAMETERS_OPTIMIZED (this project's own search, lower T(g) than Table 1;
+   * see vtkErrorDiffusionParameterTable::Optimized).
    */
-  vtkSetClampMacro(ParameterSet, int, PARAMETERS_PAPER, PARAMETERS_CUSTOM);
+  vtkSetClampMacro(ParameterSet, int, PARAMETERS_PAPER, PARAMETERS_OPTIMIZED);
   vtkGetMacro(ParameterSet, int);
   vtkSetStdStringFromCharMacro(ParameterFile);
   vtkGetCharFromStdStringMacro(ParameterFile);
@@ -226,6 +248,7 @@ protected:
   int RequestInformation(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
   int RequestData(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
 
+  int Method = METHOD_ERROR_DIFFUSION;
   int Component = 0;
   int DensityMapping = DENSITY_SCALAR_RANGE;
   double ScalarRange[2] = { 0.0, 1.0 };

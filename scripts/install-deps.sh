@@ -18,6 +18,8 @@ packages=(
   libprotobuf-dev libcgns-dev libpugixml-dev
   # FFTW3 for the spectrum; real MRI volumes for the main job and tests
   libfftw3-dev mricron-data
+  # TBB: the headers of Debian's VTK 9.1 (third CI build) include it
+  libtbb-dev
   # Python for scripts and reports
   python3-numpy python3-scipy
 )

@@ -13,3 +13,4 @@ set_tests_properties(TestErrorDiffusionSamplerLargeExtent PROPERTIES RUN_SERIAL 
 bluenoise_add_test(TestErrorDiffusionSamplerBlueNoise LABELS sampler spectrum)
 bluenoise_add_test(TestNelderMeadMinimizer LABELS optimizer)
 bluenoise_add_test(TestErrorDiffusionOptimizer LABELS optimizer)
+bluenoise_add_test(TestErrorDiffusionSamplerWhiteNoise LABELS sampler)

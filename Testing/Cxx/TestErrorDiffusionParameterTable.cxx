@@ -76,6 +76,23 @@ int main()
   Check(Near(paper.Evaluate(0.0).Modulation, 1.00) && Near(paper.Evaluate(0.5).Modulation, 1.23),
     "clamping outside the keys");
 
+  // The shipped Optimized table parses and covers the paper's 17 key levels.
+  {
+    const auto optimized = vtkErrorDiffusionParameterTable::Optimized();
+    bool same = optimized.GetKeys().size() == paper.GetKeys().size();
+    for (size_t i = 0; same && i < paper.GetKeys().size(); ++i)
+    {
+      same = optimized.GetKeys()[i].Level == paper.GetKeys()[i].Level;
+    }
+    Check(same, "Optimized table has the 17 key levels");
+    double sum = 0;
+    for (float w : optimized.Evaluate(20.0 / 255.0).Weights)
+    {
+      sum += w;
+    }
+    Check(Near(sum, 1.0), "Optimized weights sum to 1");
+  }
+
   const auto fixed = vtkErrorDiffusionParameterTable::Fixed();
   Check(Near(fixed.Evaluate(0.3).Weights[0], 4.0 / 16.0) &&
       Near(fixed.Evaluate(0.01).Weights[1], 2.0 / 16.0) && Near(fixed.Evaluate(0.7).Modulation, 1.0),

@@ -1,0 +1,328 @@
+"""The Python wrapping in plain VTK (no ParaView): `from bluenoise import ...`.
+
+Run with the Python of the VTK the module was built against and
+PYTHONPATH=<build>/lib/python3/dist-packages (BLUENOISE_PYTHONPATH). Checks a
+vtkRTAnalyticSource -> vtkErrorDiffusionSampler -> vtkBlueNoiseSpectrum
+pipeline against values computed here with numpy, the determinism of Seed,
+and every property through its Set/Get pair. Exits non-zero on any failure.
+"""
+import math
+import sys
+
+import numpy as np
+
+from bluenoise import vtkBlueNoiseSpectrum, vtkErrorDiffusionSampler
+from vtkmodules.util.numpy_support import vtk_to_numpy
+from vtkmodules.vtkCommonCore import vtkCommand
+from vtkmodules.vtkCommonDataModel import vtkPiecewiseFunction
+from vtkmodules.vtkImagingCore import vtkRTAnalyticSource
+
+FAILURES = []
+
+
+def check(condition, message):
+    if condition:
+        print("ok:   " + message)
+    else:
+        print("FAIL: " + message)
+        FAILURES.append(message)
+    return condition
+
+
+class ErrorCatcher:
+    """Collects vtkErrorMacro/vtkWarningMacro messages of one object."""
+
+    def __init__(self, obj):
+        self.errors = []
+        self.warnings = []
+        obj.AddObserver(vtkCommand.ErrorEvent, self._error)
+        obj.AddObserver(vtkCommand.WarningEvent, self._warning)
+
+    def _error(self, obj, event, message=None):
+        self.errors.append(message)
+
+    _error.CallDataType = 8  # VTK_STRING
+
+    def _warning(self, obj, event, message=None):
+        self.warnings.append(message)
+
+    _warning.CallDataType = 8
+
+
+def field_value(data, name):
+    array = data.GetFieldData().GetArray(name)
+    if array is None:
+        return None
+    return array.GetTuple(0)[0] if array.GetNumberOfComponents() == 1 else array.GetTuple(0)
+
+
+# ---------------------------------------------------------------------------
+# The input: the usual wavelet, 41^3 voxels.
+source = vtkRTAnalyticSource()
+source.SetWholeExtent(-20, 20, -20, 20, -20, 20)
+source.Update()
+image = source.GetOutput()
+dims = image.GetDimensions()
+rt = vtk_to_numpy(image.GetPointData().GetArray("RTData")).astype(np.float64)
+lo, hi = rt.min(), rt.max()
+SCALE = 0.08
+
+
+def expected_density(values, scale, lo=lo, hi=hi):
+    return np.clip((values - lo) / (hi - lo) * scale, 0.0, 1.0)
+
+
+expected_count = expected_density(rt, SCALE).sum()
+print("input: %s voxels, RTData in [%g, %g], expected %.1f points" % (rt.size, lo, hi, expected_count))
+
+# ---------------------------------------------------------------------------
+# The sampler with defaults apart from DensityScale: active scalars, ScalarRange.
+sampler = vtkErrorDiffusionSampler()
+sampler_errors = ErrorCatcher(sampler)
+sampler.SetInputConnection(source.GetOutputPort())
+sampler.SetDensityScale(SCALE)
+sampler.GenerateMaskOn()
+sampler.Update()
+points = sampler.GetOutput()
+n = points.GetNumberOfPoints()
+check(not sampler_errors.errors, "sampler ran without errors %s" % sampler_errors.errors)
+check(n > 1000, "a few thousand points (%d)" % n)
+check(abs(n - expected_count) <= 0.03 * expected_count,
+      "count %d within 3%% of the sum of densities %.1f" % (n, expected_count))
+check(points.GetNumberOfVerts() == n, "one vertex cell per point (%d verts)" % points.GetNumberOfVerts())
+
+# Points sit on voxel centres (origin 0, spacing 1: integer coordinates in the extent).
+xyz = vtk_to_numpy(points.GetPoints().GetData()).astype(np.float64)
+ijk = np.rint(xyz).astype(int)
+check(np.abs(xyz - ijk).max() < 1e-5 and ijk.min() >= -20 and ijk.max() <= 20,
+      "points at voxel centres inside the extent")
+ids = (ijk[:, 0] + 20) + dims[0] * ((ijk[:, 1] + 20) + dims[1] * (ijk[:, 2] + 20))
+check(len(np.unique(ids)) == n, "at most one point per voxel")
+
+# Arrays: the input array carried over, plus Density.
+pd = points.GetPointData()
+out_rt = pd.GetArray("RTData")
+out_density = pd.GetArray("Density")
+if check(out_rt is not None and out_density is not None, "point arrays RTData and Density present"):
+    check(np.allclose(vtk_to_numpy(out_rt), rt[ids]), "RTData values are those of the sampled voxels")
+    check(np.allclose(vtk_to_numpy(out_density), expected_density(rt[ids], SCALE), atol=1e-5),
+          "Density values are the densities of the sampled voxels")
+
+# The sampling grid in field data.
+check(field_value(points, "SamplingGridOrigin") == (0.0, 0.0, 0.0), "SamplingGridOrigin")
+check(field_value(points, "SamplingGridSpacing") == (1.0, 1.0, 1.0), "SamplingGridSpacing")
+check(field_value(points, "SamplingGridExtent") == (-20.0, 20.0, -20.0, 20.0, -20.0, 20.0),
+      "SamplingGridExtent %s" % (field_value(points, "SamplingGridExtent"),))
+check(field_value(points, "SamplingGridDirection") == (1.0, 0.0, 0.0, 0.0, 1.0, 0.0, 0.0, 0.0, 1.0),
+      "SamplingGridDirection")
+
+# The mask on port 1 marks exactly the sampled voxels.
+mask = sampler.GetMaskOutput()
+mask_array = mask.GetPointData().GetArray("SampleMask")
+if check(mask_array is not None and mask.GetDimensions() == dims, "mask image with SampleMask on the input grid"):
+    m = vtk_to_numpy(mask_array)
+    check(int(m.sum()) == n, "mask counts the points (%d)" % int(m.sum()))
+    check(np.array_equal(np.flatnonzero(m), np.sort(ids)), "mask is set exactly at the sampled voxels")
+
+# ---------------------------------------------------------------------------
+# The spectrum of the points.
+spectrum = vtkBlueNoiseSpectrum()
+spectrum_errors = ErrorCatcher(spectrum)
+spectrum.SetInputConnection(sampler.GetOutputPort())
+spectrum.Update()
+table = spectrum.GetOutput()
+check(not spectrum_errors.errors, "spectrum ran without errors %s" % spectrum_errors.errors)
+columns = ["Frequency", "RadialPower", "Anisotropy", "AnisotropyDB", "SRAPS_XY", "SRAPS_XZ", "SRAPS_YZ",
+           "ShellCount"]
+check(all(table.GetColumnByName(c) is not None for c in columns), "table columns %s" % columns)
+rows = table.GetNumberOfRows()
+freq = None
+check(rows >= 20, "one row per shell (%d rows for a 41^3 grid)" % rows)
+if rows and all(table.GetColumnByName(c) is not None for c in columns):
+    freq = vtk_to_numpy(table.GetColumnByName("Frequency"))
+    power = vtk_to_numpy(table.GetColumnByName("RadialPower"))
+    check(np.all(np.diff(freq) > 0) and freq[0] > 0, "Frequency increases from above 0")
+    check(np.all(np.isfinite(power)) and np.all(power >= 0), "RadialPower finite and non-negative")
+    check(np.all(vtk_to_numpy(table.GetColumnByName("ShellCount")) > 0), "every shell has samples")
+check(field_value(table, "NumberOfPoints") == n, "NumberOfPoints %s == %d" % (field_value(table, "NumberOfPoints"), n))
+check(field_value(table, "GridDimensions") == (41.0, 41.0, 41.0), "GridDimensions from the sampling grid")
+check(field_value(table, "Realisations") == 1, "one realisation")
+density = field_value(table, "Density")
+check(density is not None and math.isclose(density, n / rt.size, rel_tol=1e-9),
+      "Density %s == N / voxels %.6f" % (density, n / rt.size))
+L = field_value(table, "LowFrequencyRatio")
+C = field_value(table, "SymmetryCorrelation")
+S = field_value(table, "Symmetry")
+T = field_value(table, "TargetValue")
+check(L is not None and 0 < L < 1, "LowFrequencyRatio %s in (0, 1)" % L)
+check(S is not None and C is not None and math.isclose(S, 1 - C, abs_tol=1e-12), "Symmetry = 1 - C")
+check(T is not None and math.isclose(T, 0.02 * L + 0.98 * S, rel_tol=1e-9, abs_tol=1e-12),
+      "TargetValue = 0.02 L + 0.98 S")
+pf = field_value(table, "PrincipalFrequency")
+check(pf is not None and freq is not None and 0 < pf <= freq[-1], "PrincipalFrequency %s within the shells" % pf)
+image_out = spectrum.GetSpectrumImageOutput()
+check(image_out.GetDimensions() == (41, 41, 41) and image_out.GetPointData().GetArray("Power") is not None,
+      "spectrum image 41^3 with Power")
+
+# The mask, read as counts on its own grid, is the same signal: same metric.
+mask_spectrum = vtkBlueNoiseSpectrum()
+mask_spectrum.SetInputConnection(sampler.GetOutputPort(1))
+mask_spectrum.Update()
+check(math.isclose(field_value(mask_spectrum.GetOutput(), "LowFrequencyRatio"), L, rel_tol=1e-9),
+      "spectrum of the mask image equals the spectrum of the points")
+
+# ---------------------------------------------------------------------------
+# Determinism: same seed, same points; another seed, other points, same count.
+def sample(seed, **settings):
+    s = vtkErrorDiffusionSampler()
+    s.SetInputConnection(source.GetOutputPort())
+    s.SetDensityScale(SCALE)
+    s.SetSeed(seed)
+    for name, value in settings.items():
+        getattr(s, "Set" + name)(value)
+    s.Update()
+    return vtk_to_numpy(s.GetOutput().GetPoints().GetData()).copy()
+
+
+a, b, c = sample(7), sample(7), sample(8)
+check(np.array_equal(a, b), "Seed 7 twice gives the same points")
+check(a.shape != c.shape or not np.array_equal(a, c), "Seed 8 gives other points")
+check(abs(len(c) - expected_count) <= 0.03 * expected_count, "Seed 8 count %d within 3%%" % len(c))
+check(np.array_equal(sample(0), vtk_to_numpy(points.GetPoints().GetData())), "default Seed is 0")
+
+# Two realisations averaged by the spectrum.
+other = vtkErrorDiffusionSampler()
+other.SetInputConnection(source.GetOutputPort())
+other.SetDensityScale(SCALE)
+other.SetSeed(8)
+spectrum.AddInputConnection(other.GetOutputPort())
+spectrum.Update()
+check(field_value(spectrum.GetOutput(), "Realisations") == 2, "two realisations")
+check(math.isclose(field_value(spectrum.GetOutput(), "NumberOfPoints"), (n + len(c)) / 2.0),
+      "NumberOfPoints is the mean over realisations")
+
+# Identity and transfer-function mappings follow their definitions.
+ident = vtkErrorDiffusionSampler()
+ident.SetInputConnection(source.GetOutputPort())
+ident.SetDensityMappingToIdentity()
+ident.SetDensityScale(0.0005)  # RTData ~ 40..280 -> densities ~ 0.02..0.14
+ident.Update()
+exp_ident = np.clip(rt * 0.0005, 0, 1).sum()
+check(abs(ident.GetOutput().GetNumberOfPoints() - exp_ident) <= 0.03 * exp_ident,
+      "Identity mapping: %d points, expected %.1f" % (ident.GetOutput().GetNumberOfPoints(), exp_ident))
+
+threshold = 150.0
+tf = vtkPiecewiseFunction()
+tf.AddPoint(lo, 0.0)
+tf.AddPoint(threshold, 0.0)
+tf.AddPoint(hi, 0.2)
+tfs = vtkErrorDiffusionSampler()
+tfs.SetInputConnection(source.GetOutputPort())
+tfs.SetDensityMappingToTransferFunction()
+tfs.SetTransferFunction(tf)
+tfs.Update()
+tf_out = tfs.GetOutput()
+exp_tf = np.interp(rt, [lo, threshold, hi], [0.0, 0.0, 0.2]).sum()
+check(abs(tf_out.GetNumberOfPoints() - exp_tf) <= 0.03 * exp_tf,
+      "TransferFunction mapping: %d points, expected %.1f" % (tf_out.GetNumberOfPoints(), exp_tf))
+if tf_out.GetNumberOfPoints():
+    check(vtk_to_numpy(tf_out.GetPointData().GetArray("RTData")).min() > threshold,
+          "no point where the transfer function is 0")
+# The transfer function's modification re-executes the sampler.
+n_tf = tf_out.GetNumberOfPoints()
+tf.AddPoint(hi, 0.4)
+tfs.Update()
+check(tfs.GetOutput().GetNumberOfPoints() > 1.5 * n_tf,
+      "editing the transfer function re-executes the sampler")
+
+# Bad input: an error and empty outputs, not a crash.
+bad = vtkErrorDiffusionSampler()
+bad_errors = ErrorCatcher(bad)
+bad.SetInputConnection(source.GetOutputPort())
+bad.SetDensityScale(-1.0)
+print("(a vtkExecutive error about the failed request is expected next)", flush=True)
+bad.Update()
+check(bad_errors.errors and bad.GetOutput().GetNumberOfPoints() == 0,
+      "negative DensityScale: error and no points")
+
+# ---------------------------------------------------------------------------
+# Every property through Set/Get (values different from the defaults).
+s = vtkErrorDiffusionSampler()
+defaults = {
+    "Component": 0, "DensityMapping": 1, "ScalarRange": (0.0, 1.0), "UseCustomScalarRange": False,
+    "DensityScale": 1.0, "ParameterSet": 0, "ParameterFile": "", "ModulationScale": 0.5, "Seed": 0,
+    "BoundaryMode": 1, "WarmUpLayers": 8, "GenerateMask": False, "OutputPointsPrecision": 0,
+}
+for name, value in defaults.items():
+    got = getattr(s, "Get" + name)()
+    check(got == value or (got is None and value == ""), "sampler default %s = %r (got %r)" % (name, value, got))
+check(s.GetTransferFunction() is None, "sampler default TransferFunction is None")
+values = {
+    "Component": -1, "DensityMapping": 2, "ScalarRange": (-3.5, 12.25), "UseCustomScalarRange": True,
+    "DensityScale": 0.375, "ParameterSet": 2, "ParameterFile": "/tmp/some table.txt", "ModulationScale": 1.25,
+    "Seed": 12345, "BoundaryMode": 0, "WarmUpLayers": 100, "GenerateMask": True, "OutputPointsPrecision": 1,
+}
+for name, value in values.items():
+    getattr(s, "Set" + name)(value)
+    check(getattr(s, "Get" + name)() == value, "sampler Set/Get%s %r" % (name, value))
+s.SetTransferFunction(tf)
+check(s.GetTransferFunction() is tf, "sampler Set/GetTransferFunction")
+s.SetDensityMappingToIdentity()
+check(s.GetDensityMapping() == vtkErrorDiffusionSampler.DENSITY_IDENTITY == 0, "SetDensityMappingToIdentity")
+s.SetDensityMappingToScalarRange()
+check(s.GetDensityMapping() == vtkErrorDiffusionSampler.DENSITY_SCALAR_RANGE == 1, "SetDensityMappingToScalarRange")
+s.SetDensityMappingToTransferFunction()
+check(s.GetDensityMapping() == vtkErrorDiffusionSampler.DENSITY_TRANSFER_FUNCTION == 2,
+      "SetDensityMappingToTransferFunction")
+check((vtkErrorDiffusionSampler.PARAMETERS_PAPER, vtkErrorDiffusionSampler.PARAMETERS_FIXED,
+       vtkErrorDiffusionSampler.PARAMETERS_CUSTOM) == (0, 1, 2), "ParameterSets enum")
+check((vtkErrorDiffusionSampler.BOUNDARY_RENORMALIZE, vtkErrorDiffusionSampler.BOUNDARY_STEADY_STATE) == (0, 1),
+      "BoundaryModes enum")
+s.UseCustomScalarRangeOff()
+s.GenerateMaskOff()
+check(not s.GetUseCustomScalarRange() and not s.GetGenerateMask(), "boolean Off macros")
+# Clamped setters.
+s.SetDensityMapping(7)
+s.SetComponent(-5)
+s.SetWarmUpLayers(100000)
+s.SetBoundaryMode(3)
+s.SetParameterSet(-2)
+check((s.GetDensityMapping(), s.GetComponent(), s.GetWarmUpLayers(), s.GetBoundaryMode(), s.GetParameterSet())
+      == (2, -1, 4096, 1, 0), "clamped setters clamp")
+
+sp = vtkBlueNoiseSpectrum()
+sdefaults = {"Weight": 0.02, "UseInputGrid": True, "GridDimensions": (64, 64, 64),
+             "GridBounds": (0.0, 1.0, 0.0, 1.0, 0.0, 1.0), "UseGridBounds": False, "GenerateSpectrumImage": True}
+for name, value in sdefaults.items():
+    check(getattr(sp, "Get" + name)() == value, "spectrum default %s = %r" % (name, value))
+svalues = {"Weight": 0.75, "UseInputGrid": False, "GridDimensions": (17, 19, 23),
+           "GridBounds": (-1.0, 2.0, -3.0, 4.0, -5.0, 6.0), "UseGridBounds": True, "GenerateSpectrumImage": False}
+for name, value in svalues.items():
+    getattr(sp, "Set" + name)(value)
+    check(getattr(sp, "Get" + name)() == value, "spectrum Set/Get%s %r" % (name, value))
+sp.SetWeight(1.5)
+check(sp.GetWeight() == 1.0, "Weight clamped to 1")
+
+# The spectrum honours UseInputGrid off + GridDimensions (+ GridBounds).
+sp.SetWeight(0.02)
+sp.SetUseGridBounds(False)
+sp.SetInputConnection(sampler.GetOutputPort())
+sp.Update()
+check(field_value(sp.GetOutput(), "GridDimensions") == (17.0, 19.0, 23.0), "GridDimensions used with UseInputGrid off")
+# GridBounds over the sampled extent with one grid point per voxel: the same
+# binning as the sampling grid, hence the same metric.
+sp.SetGridDimensions(41, 41, 41)
+sp.SetGridBounds(-20, 20, -20, 20, -20, 20)
+sp.SetUseGridBounds(True)
+sp.Update()
+check(math.isclose(field_value(sp.GetOutput(), "LowFrequencyRatio"), L, rel_tol=1e-9),
+      "GridBounds equal to the sampling grid give the same metric")
+
+check("paraview" not in sys.modules and "paraview.simple" not in sys.modules, "ran without paraview")
+
+if FAILURES:
+    print("\n%d check(s) failed:" % len(FAILURES))
+    for f in FAILURES:
+        print("  - " + f)
+    sys.exit(1)
+print("\nall checks passed")
