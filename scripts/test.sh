@@ -18,13 +18,18 @@ run_suite() { # name, cmake args...
   echo "=== $name: configure, build, test ($dir)"
   cmake -S "$root" -B "$dir" -G Ninja -DCMAKE_BUILD_TYPE=Release "$@"
   cmake --build "$dir" -j "$jobs"
-  (cd "$dir" && ctest --output-on-failure -j "$jobs" --timeout 900) || status=1
+  (cd "$dir" && ctest --output-on-failure -j "$jobs" --timeout 900)
 }
 
-run_suite paraview -DParaView_DIR="$paraview_dir"
-run_suite vtk-only -DBLUENOISE_VTK_ONLY=ON -DVTK_DIR="$paraview_dir/vtk"
+run_suite paraview -DParaView_DIR="$paraview_dir" || status=1
+run_suite vtk-only -DBLUENOISE_VTK_ONLY=ON -DVTK_DIR="$paraview_dir/vtk" || status=1
 vtk91="$root/_build/vtk-9.1-prefix"
 bash "$root/scripts/unpack-vtk91.sh" "$vtk91"
-run_suite vtk-9.1 -DBLUENOISE_VTK_ONLY=ON -DBLUENOISE_WRAP_PYTHON=OFF \
-  -DVTK_DIR="$vtk91/usr/lib/x86_64-linux-gnu/cmake/vtk-9.1"
+# The unpacked libraries are not in the loader's paths: their own dependencies
+# among themselves are found through LD_LIBRARY_PATH.
+(
+  export LD_LIBRARY_PATH="$vtk91/usr/lib/x86_64-linux-gnu${LD_LIBRARY_PATH:+:$LD_LIBRARY_PATH}"
+  run_suite vtk-9.1 -DBLUENOISE_VTK_ONLY=ON -DBLUENOISE_WRAP_PYTHON=OFF \
+    -DVTK_DIR="$vtk91/usr/lib/x86_64-linux-gnu/cmake/vtk-9.1"
+) || status=1
 exit $status

@@ -1,0 +1,639 @@
+// Off-screen pictures of the main job; see bluenoise_pictures.h.
+#include "bluenoise_pictures.h"
+
+#include "vtkActor.h"
+#include "vtkAxis.h"
+#include "vtkCamera.h"
+#include "vtkCellArray.h"
+#include "vtkChartLegend.h"
+#include "vtkChartXY.h"
+#include "vtkColorTransferFunction.h"
+#include "vtkCommand.h"
+#include "vtkContextScene.h"
+#include "vtkContextView.h"
+#include "vtkCoordinate.h"
+#include "vtkDataArray.h"
+#include "vtkDoubleArray.h"
+#include "vtkFieldData.h"
+#include "vtkFloatArray.h"
+#include "vtkImageData.h"
+#include "vtkLookupTable.h"
+#include "vtkNew.h"
+#include "vtkOpenGLRenderWindow.h"
+#include "vtkPNGWriter.h"
+#include "vtkPen.h"
+#include "vtkPlot.h"
+#include "vtkPointData.h"
+#include "vtkPoints.h"
+#include "vtkPolyData.h"
+#include "vtkPolyDataMapper.h"
+#include "vtkProperty.h"
+#include "vtkRect.h"
+#include "vtkRenderWindow.h"
+#include "vtkRenderer.h"
+#include "vtkScalarBarActor.h"
+#include "vtkSmartPointer.h"
+#include "vtkTable.h"
+#include "vtkTextActor.h"
+#include "vtkTextProperty.h"
+#include "vtkWindowToImageFilter.h"
+
+#ifdef BLUENOISE_HAVE_XLIB
+#include <X11/Xlib.h>
+#endif
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <limits>
+#include <vector>
+
+namespace
+{
+// Collects the error messages VTK objects report while we render, so that a
+// failure becomes a message and a return value instead of a blank picture.
+class ErrorCollector : public vtkCommand
+{
+public:
+  static ErrorCollector* New() { return new ErrorCollector; }
+  void Execute(vtkObject*, unsigned long, void* callData) override
+  {
+    const char* text = static_cast<const char*>(callData);
+    if (!this->Messages.empty())
+    {
+      this->Messages += "; ";
+    }
+    std::string message = text ? text : "unknown error";
+    while (!message.empty() && (message.back() == '\n' || message.back() == ' '))
+    {
+      message.pop_back();
+    }
+    this->Messages += message;
+  }
+  void Watch(vtkObject* object) { object->AddObserver(vtkCommand::ErrorEvent, this); }
+  std::string Messages;
+};
+
+std::string DisplayName()
+{
+  const char* display = std::getenv("DISPLAY");
+  return display ? display : "";
+}
+
+std::string Format(const char* format, double value)
+{
+  char buffer[64];
+  std::snprintf(buffer, sizeof(buffer), format, value);
+  return buffer;
+}
+
+// A sequential colour map from dark blue-violet through teal and green to
+// yellow, with a lightness that rises monotonically.
+vtkSmartPointer<vtkLookupTable> MakeColorMap(const double range[2])
+{
+  vtkNew<vtkColorTransferFunction> ramp;
+  ramp->SetColorSpaceToRGB();
+  const double stops[][4] = { { 0.00, 0.27, 0.00, 0.33 }, { 0.25, 0.23, 0.32, 0.55 },
+    { 0.50, 0.13, 0.57, 0.55 }, { 0.75, 0.37, 0.79, 0.38 }, { 1.00, 0.99, 0.91, 0.14 } };
+  for (const auto& s : stops)
+  {
+    ramp->AddRGBPoint(s[0], s[1], s[2], s[3]);
+  }
+  auto table = vtkSmartPointer<vtkLookupTable>::New();
+  const int n = 256;
+  table->SetNumberOfTableValues(n);
+  for (int i = 0; i < n; ++i)
+  {
+    double rgb[3];
+    ramp->GetColor(i / (n - 1.0), rgb);
+    table->SetTableValue(i, rgb[0], rgb[1], rgb[2], 1.0);
+  }
+  table->SetTableRange(range[0], range[1]);
+  return table;
+}
+
+// The samples whose coordinate `axis` lies within `half` of `centre`.
+vtkSmartPointer<vtkPolyData> Slab(vtkPolyData* samples, vtkDataArray* colors, int axis,
+  double centre, double half)
+{
+  vtkNew<vtkPoints> points;
+  points->SetDataTypeToFloat();
+  vtkNew<vtkFloatArray> values;
+  values->SetName(colors->GetName() ? colors->GetName() : "values");
+  const vtkIdType n = samples->GetNumberOfPoints();
+  for (vtkIdType i = 0; i < n; ++i)
+  {
+    double p[3];
+    samples->GetPoint(i, p);
+    if (std::abs(p[axis] - centre) <= half)
+    {
+      points->InsertNextPoint(p);
+      values->InsertNextValue(static_cast<float>(colors->GetComponent(i, 0)));
+    }
+  }
+  vtkNew<vtkCellArray> vertices;
+  for (vtkIdType i = 0; i < points->GetNumberOfPoints(); ++i)
+  {
+    vertices->InsertNextCell(1, &i);
+  }
+  auto slab = vtkSmartPointer<vtkPolyData>::New();
+  slab->SetPoints(points);
+  slab->SetVerts(vertices);
+  slab->GetPointData()->SetScalars(values);
+  return slab;
+}
+
+vtkSmartPointer<vtkActor> PointsActor(
+  vtkPolyData* points, const char* array, vtkLookupTable* colors, double pointSize)
+{
+  vtkNew<vtkPolyDataMapper> mapper;
+  mapper->SetInputData(points);
+  mapper->SetLookupTable(colors);
+  mapper->SetUseLookupTableScalarRange(true);
+  mapper->SetColorModeToMapScalars(); // unsigned char values are values, not colours
+  mapper->SetScalarModeToUsePointFieldData();
+  mapper->SelectColorArray(array);
+  mapper->ScalarVisibilityOn();
+  auto actor = vtkSmartPointer<vtkActor>::New();
+  actor->SetMapper(mapper);
+  actor->GetProperty()->SetRepresentationToPoints();
+  actor->GetProperty()->SetPointSize(static_cast<float>(pointSize));
+  actor->GetProperty()->SetRenderPointsAsSpheres(true);
+  actor->GetProperty()->SetAmbient(0.25);
+  actor->GetProperty()->SetDiffuse(0.8);
+  return actor;
+}
+
+// Text whose top left corner is at (x, y) in normalized viewport coordinates.
+vtkSmartPointer<vtkTextActor> Caption(const std::string& text, int size, double x, double y)
+{
+  auto caption = vtkSmartPointer<vtkTextActor>::New();
+  caption->SetInput(text.c_str());
+  caption->GetTextProperty()->SetFontSize(size);
+  caption->GetTextProperty()->SetColor(0.12, 0.12, 0.15);
+  caption->GetTextProperty()->SetJustification(VTK_TEXT_LEFT);
+  caption->GetTextProperty()->SetVerticalJustification(VTK_TEXT_TOP);
+  caption->GetPositionCoordinate()->SetCoordinateSystemToNormalizedViewport();
+  caption->GetPositionCoordinate()->SetValue(x, y);
+  return caption;
+}
+
+// Renders `window` (already populated) and writes it as a PNG.
+bool Capture(vtkRenderWindow* window, ErrorCollector* errors, const std::string& png,
+  std::string& error)
+{
+  window->Render();
+  vtkNew<vtkWindowToImageFilter> grab;
+  errors->Watch(grab);
+  grab->SetInput(window);
+  grab->SetInputBufferTypeToRGB();
+  grab->ReadFrontBufferOff();
+  grab->Update();
+  vtkImageData* image = grab->GetOutput();
+  int dims[3] = { 0, 0, 0 };
+  image->GetDimensions(dims);
+  if (!errors->Messages.empty() || dims[0] < 2 || dims[1] < 2)
+  {
+    error = "rendering failed" + (errors->Messages.empty() ? "" : ": " + errors->Messages);
+    return false;
+  }
+  vtkNew<vtkPNGWriter> writer;
+  errors->Watch(writer);
+  writer->SetInputData(image);
+  writer->SetFileName(png.c_str());
+  writer->Write();
+  if (writer->GetErrorCode() != 0 || !errors->Messages.empty())
+  {
+    error = "cannot write " + png + (errors->Messages.empty() ? "" : ": " + errors->Messages);
+    return false;
+  }
+  return true;
+}
+
+vtkSmartPointer<vtkDoubleArray> Column(const char* name, const std::vector<double>& values)
+{
+  auto column = vtkSmartPointer<vtkDoubleArray>::New();
+  column->SetName(name);
+  column->SetNumberOfTuples(static_cast<vtkIdType>(values.size()));
+  for (size_t i = 0; i < values.size(); ++i)
+  {
+    column->SetValue(static_cast<vtkIdType>(i), values[i]);
+  }
+  return column;
+}
+
+// A two-point line (x0, y0) - (x1, y1) as a table for a chart plot.
+vtkSmartPointer<vtkTable> Segment(double x0, double y0, double x1, double y1)
+{
+  auto table = vtkSmartPointer<vtkTable>::New();
+  table->AddColumn(Column("x", { x0, x1 }));
+  table->AddColumn(Column("y", { y0, y1 }));
+  return table;
+}
+
+double FieldValue(vtkTable* table, const char* name)
+{
+  vtkDataArray* a = table->GetFieldData()->GetArray(name);
+  return a && a->GetNumberOfTuples() > 0 ? a->GetComponent(0, 0)
+                                         : std::numeric_limits<double>::quiet_NaN();
+}
+
+vtkPlot* AddLine(vtkChartXY* chart, vtkTable* table, const char* x, const char* y,
+  const char* label, const unsigned char rgb[3], float width, int lineType)
+{
+  vtkPlot* line = chart->AddPlot(vtkChart::LINE);
+  line->SetInputData(table, x, y);
+  line->SetLabel(label);
+  line->SetColor(rgb[0], rgb[1], rgb[2], 255);
+  line->SetWidth(width);
+  line->GetPen()->SetLineType(lineType);
+  return line;
+}
+
+void StyleChart(vtkChartXY* chart, const std::string& title, const char* yTitle, double xMax,
+  double yMin, double yMax)
+{
+  chart->SetTitle(title);
+  chart->GetTitleProperties()->SetFontSize(17);
+  chart->GetTitleProperties()->SetBold(true);
+  vtkAxis* x = chart->GetAxis(vtkAxis::BOTTOM);
+  x->SetTitle("frequency f (cycles per voxel)");
+  x->SetBehavior(vtkAxis::FIXED);
+  x->SetRange(0.0, xMax);
+  vtkAxis* y = chart->GetAxis(vtkAxis::LEFT);
+  y->SetTitle(yTitle);
+  y->SetBehavior(vtkAxis::FIXED);
+  y->SetRange(yMin, yMax);
+  for (vtkAxis* axis : { x, y })
+  {
+    axis->GetTitleProperties()->SetFontSize(15);
+    axis->GetTitleProperties()->SetBold(false);
+    axis->GetLabelProperties()->SetFontSize(13);
+  }
+  chart->SetShowLegend(true);
+  chart->GetLegend()->GetLabelProperties()->SetFontSize(14);
+  chart->GetLegend()->SetLabelSize(14);
+}
+}
+
+namespace bluenoise
+{
+PictureSession::~PictureSession()
+{
+#ifdef BLUENOISE_HAVE_XLIB
+  if (this->XDisplay)
+  {
+    XCloseDisplay(static_cast<::Display*>(this->XDisplay));
+  }
+#endif
+}
+
+void PictureSession::Attach(vtkRenderWindow* window) const
+{
+  if (this->XDisplay)
+  {
+    window->SetDisplayId(this->XDisplay);
+  }
+}
+
+bool PictureSession::Start(std::string& why)
+{
+  vtkSmartPointer<vtkRenderWindow> probe = vtkSmartPointer<vtkRenderWindow>::New();
+  if (!probe)
+  {
+    why = "this VTK has no render window implementation (VTK::RenderingOpenGL2 not loaded)";
+    return false;
+  }
+  if (probe->IsA("vtkXOpenGLRenderWindow"))
+  {
+    const std::string display = DisplayName();
+    const std::string hint = "; run under xvfb-run -a (package xvfb), or pass --no-pictures";
+#ifdef BLUENOISE_HAVE_XLIB
+    if (!this->XDisplay)
+    {
+      ::Display* connection = XOpenDisplay(nullptr);
+      if (!connection)
+      {
+        why = display.empty() ? "no X display (DISPLAY is not set)"
+                              : "cannot open the X display DISPLAY=" + display;
+        why += hint;
+        return false;
+      }
+      int opcode = 0, event = 0, errorBase = 0;
+      if (!XQueryExtension(connection, "GLX", &opcode, &event, &errorBase))
+      {
+        XCloseDisplay(connection);
+        why = "the X display DISPLAY=" + display + " has no GLX (OpenGL) extension" + hint;
+        return false;
+      }
+      this->XDisplay = connection;
+    }
+#else
+    if (display.empty())
+    {
+      why = "no X display (DISPLAY is not set)" + hint;
+      return false;
+    }
+#endif
+  }
+  this->Attach(probe);
+  probe->SetOffScreenRendering(1);
+  if (!probe->SupportsOpenGL())
+  {
+    why = "OpenGL 3.2 is not available";
+    if (auto gl = vtkOpenGLRenderWindow::SafeDownCast(probe))
+    {
+      const std::string message = gl->GetOpenGLSupportMessage();
+      if (!message.empty())
+      {
+        why += " (" + message + ")";
+      }
+    }
+    why += "; try xvfb-run -a, or pass --no-pictures";
+    return false;
+  }
+  return true;
+}
+
+bool WriteSamplesPicture(const PictureSession& session, vtkPolyData* samples,
+  const SamplesPicture& options, const std::string& png, std::string& error)
+{
+  if (!samples || samples->GetNumberOfPoints() == 0)
+  {
+    error = "no points to render";
+    return false;
+  }
+  vtkDataArray* colors = nullptr;
+  if (!options.ColorArray.empty())
+  {
+    colors = samples->GetPointData()->GetArray(options.ColorArray.c_str());
+  }
+  if (!colors || colors->GetNumberOfComponents() != 1)
+  {
+    colors = samples->GetPointData()->GetArray("Density");
+  }
+  if (!colors || !colors->GetName())
+  {
+    error = "the points carry no array to colour by";
+    return false;
+  }
+  double range[2];
+  colors->GetRange(range, 0);
+  if (!(range[1] > range[0]))
+  {
+    range[1] = range[0] + 1.0;
+  }
+  auto lut = MakeColorMap(range);
+  const std::string colorTitle = colors->GetName();
+
+  double bounds[6];
+  samples->GetBounds(bounds);
+  const double centre[3] = { 0.5 * (bounds[0] + bounds[1]), 0.5 * (bounds[2] + bounds[3]),
+    0.5 * (bounds[4] + bounds[5]) };
+  const double size[3] = { bounds[1] - bounds[0], bounds[3] - bounds[2], bounds[5] - bounds[4] };
+  const double half = 0.5 * std::max(options.SlabThickness, 1e-12);
+
+  vtkNew<vtkRenderWindow> window;
+  session.Attach(window);
+  vtkNew<ErrorCollector> errors;
+  errors->Watch(window);
+  window->SetOffScreenRendering(1);
+  window->SetSize(options.Width, options.Height);
+  window->SetMultiSamples(0);
+
+  // Left: every point in 3D, seen from -x, a little from +y and from above
+  // (for a brain in RAS orientation such as the MNI templates: from the left,
+  // slightly from the front, z up).
+  const double split = 0.62;
+  vtkNew<vtkRenderer> whole;
+  whole->SetViewport(0.0, 0.0, split, 1.0);
+  whole->SetBackground(1.0, 1.0, 1.0);
+  whole->AddActor(PointsActor(samples, colors->GetName(), lut, 2.5));
+  whole->UseFXAAOn();
+  vtkCamera* camera = whole->GetActiveCamera();
+  camera->SetFocalPoint(centre);
+  camera->SetPosition(centre[0] - 1.0, centre[1] + 0.45, centre[2] + 0.35);
+  camera->SetViewUp(0.0, 0.0, 1.0);
+  whole->ResetCamera();
+  camera->Zoom(1.15);
+  whole->ResetCameraClippingRange();
+  window->AddRenderer(whole);
+
+  const std::string count = std::to_string(samples->GetNumberOfPoints());
+  std::string caption = options.Caption.empty() ? "" : options.Caption + "\n";
+  caption += count + " blue-noise samples, coloured by " +
+    (colorTitle == "Density" ? "the density they were drawn with"
+                             : "the input array " + colorTitle);
+  whole->AddViewProp(Caption(caption, 18, 0.02, 0.98));
+  vtkNew<vtkScalarBarActor> bar;
+  bar->SetLookupTable(lut);
+  bar->SetTitle(colorTitle.c_str());
+  bar->SetNumberOfLabels(5);
+  bar->SetLabelFormat("%.3g");
+  bar->SetOrientationToVertical();
+  bar->UnconstrainedFontSizeOn();
+  bar->GetTitleTextProperty()->SetFontSize(15);
+  bar->GetTitleTextProperty()->SetColor(0.12, 0.12, 0.15);
+  bar->GetTitleTextProperty()->ItalicOff();
+  bar->GetTitleTextProperty()->ShadowOff();
+  bar->GetLabelTextProperty()->SetFontSize(13);
+  bar->GetLabelTextProperty()->SetColor(0.12, 0.12, 0.15);
+  bar->GetLabelTextProperty()->ItalicOff();
+  bar->GetLabelTextProperty()->ShadowOff();
+  bar->GetPositionCoordinate()->SetCoordinateSystemToNormalizedViewport();
+  bar->GetPositionCoordinate()->SetValue(0.87, 0.2);
+  bar->SetWidth(0.12);
+  bar->SetHeight(0.6);
+  bar->SetBarRatio(0.3);
+  whole->AddViewProp(bar);
+
+  // Right: an axial (z) and a sagittal (x) slab through the centre, head-on.
+  struct SlabView
+  {
+    int Axis;
+    const char* Name;
+    double ViewportY0;
+    int Up;
+  };
+  const SlabView views[2] = { { 2, "axial", 0.5, 1 }, { 0, "sagittal", 0.0, 2 } };
+  for (const SlabView& v : views)
+  {
+    auto slab = Slab(samples, colors, v.Axis, centre[v.Axis], half);
+    vtkNew<vtkRenderer> renderer;
+    renderer->SetViewport(split, v.ViewportY0, 1.0, v.ViewportY0 + 0.5);
+    renderer->SetBackground(0.95, 0.95, 0.96);
+    renderer->AddActor(PointsActor(slab, colors->GetName(), lut, 4.0));
+    renderer->UseFXAAOn();
+    vtkCamera* c = renderer->GetActiveCamera();
+    c->ParallelProjectionOn();
+    c->SetFocalPoint(centre);
+    // Axial: from above; sagittal: from the left side, anterior to the left.
+    const double depth = std::max({ size[0], size[1], size[2], 1.0 });
+    double position[3] = { centre[0], centre[1], centre[2] };
+    position[v.Axis] += v.Axis == 2 ? depth : -depth;
+    c->SetPosition(position);
+    double up[3] = { 0.0, 0.0, 0.0 };
+    up[v.Up] = 1.0;
+    c->SetViewUp(up);
+    // Fit the in-plane extent of the whole cloud (same scale for every slab).
+    int across = 3 - v.Axis - v.Up;
+    const double viewportAspect =
+      ((1.0 - split) * options.Width) / (0.5 * options.Height);
+    c->SetParallelScale(0.5 * 1.25 * std::max(size[v.Up], size[across] / viewportAspect));
+    renderer->ResetCameraClippingRange();
+    const char axis = "xyz"[v.Axis];
+    const std::string text = std::string(v.Name) + " slab " + axis + " = " +
+      Format("%.4g", centre[v.Axis]) + " \xC2\xB1 " + Format("%.3g", half) + ", seen from " +
+      (v.Axis == 2 ? "+" : "-") + axis + " (" + std::to_string(slab->GetNumberOfPoints()) +
+      " points)";
+    renderer->AddViewProp(Caption(text, 15, 0.03, 0.97));
+    window->AddRenderer(renderer);
+  }
+  return Capture(window, errors, png, error);
+}
+
+bool WriteSpectrumPlot(const PictureSession& session, vtkTable* spectrum,
+  const SpectrumPlot& options, const std::string& png, std::string& error)
+{
+  vtkDataArray* frequency =
+    spectrum ? vtkDataArray::SafeDownCast(spectrum->GetColumnByName("Frequency")) : nullptr;
+  vtkDataArray* power =
+    spectrum ? vtkDataArray::SafeDownCast(spectrum->GetColumnByName("RadialPower")) : nullptr;
+  vtkDataArray* anisotropy =
+    spectrum ? vtkDataArray::SafeDownCast(spectrum->GetColumnByName("AnisotropyDB")) : nullptr;
+  vtkDataArray* counts =
+    spectrum ? vtkDataArray::SafeDownCast(spectrum->GetColumnByName("ShellCount")) : nullptr;
+  if (!frequency || !power || !anisotropy || spectrum->GetNumberOfRows() < 2)
+  {
+    error = "the spectrum table lacks Frequency, RadialPower or AnisotropyDB";
+    return false;
+  }
+  const vtkIdType rows = spectrum->GetNumberOfRows();
+  const double g = FieldValue(spectrum, "Density");
+  const double fg = FieldValue(spectrum, "PrincipalFrequency");
+
+  // The curves, without shells whose anisotropy is undefined (floored at
+  // -300 dB: fewer than two samples, or no power). The axis ranges leave out
+  // the few sparse shells near the corner frequency (beyond f = 0.5 the
+  // shells are only partly inside the spectrum; their estimates scatter
+  // widely and would flatten the rest); their curves are clipped instead.
+  std::vector<double> f, p, fa, a;
+  double pMax = 0.0, aMin = 0.0, aMax = 0.0;
+  for (vtkIdType i = 0; i < rows; ++i)
+  {
+    f.push_back(frequency->GetComponent(i, 0));
+    p.push_back(power->GetComponent(i, 0));
+    const bool dense = f.back() <= 0.5 || !counts || counts->GetComponent(i, 0) >= 500.0;
+    if (dense)
+    {
+      pMax = std::max(pMax, p.back());
+    }
+    const double db = anisotropy->GetComponent(i, 0);
+    if (db > -299.0)
+    {
+      fa.push_back(f.back());
+      a.push_back(db);
+      if (dense)
+      {
+        aMin = std::min(aMin, db);
+        aMax = std::max(aMax, db);
+      }
+    }
+  }
+  const double fMax = f.back();
+  vtkNew<vtkTable> powerTable;
+  powerTable->AddColumn(Column("f", f));
+  powerTable->AddColumn(Column("power", p));
+  vtkNew<vtkTable> anisotropyTable;
+  anisotropyTable->AddColumn(Column("f", fa));
+  anisotropyTable->AddColumn(Column("dB", a));
+
+  const unsigned char blue[3] = { 31, 90, 180 };
+  const unsigned char orange[3] = { 214, 100, 20 };
+  const unsigned char red[3] = { 200, 30, 45 };
+  const unsigned char grey[3] = { 120, 120, 120 };
+
+  vtkNew<vtkContextView> view;
+  vtkRenderWindow* window = view->GetRenderWindow();
+  session.Attach(window);
+  vtkNew<ErrorCollector> errors;
+  errors->Watch(window);
+  window->SetOffScreenRendering(1);
+  window->SetSize(options.Width, options.Height);
+  window->SetMultiSamples(0);
+  view->GetRenderer()->SetBackground(1.0, 1.0, 1.0);
+
+  const float w = static_cast<float>(options.Width);
+  const float h = static_cast<float>(options.Height);
+  const float titleSpace = 58.0f;
+  const float top = h - titleSpace;
+  // Both charts get the same axes rectangle within their half (the axes, not
+  // the labels, are placed), so their frequency axes line up.
+  auto AxesRect = [w](float bottom, float height) {
+    const float left = 85.0f, right = 25.0f, below = 52.0f, above = 32.0f;
+    return vtkRectf(left, bottom + below, w - left - right, height - below - above);
+  };
+
+  // Top: radially averaged power.
+  vtkNew<vtkChartXY> powerChart;
+  const double pTop = 1.12 * std::max(pMax, std::isfinite(g) ? 1.0 - g : 0.0);
+  StyleChart(powerChart, "Radially averaged power spectrum", "power P(f)", fMax, 0.0, pTop);
+  AddLine(powerChart, powerTable, "f", "power", "RadialPower", blue, 2.5f, vtkPen::SOLID_LINE);
+  vtkSmartPointer<vtkTable> whiteLevel, powerMark;
+  if (std::isfinite(g))
+  {
+    whiteLevel = Segment(0.0, 1.0 - g, fMax, 1.0 - g);
+    AddLine(powerChart, whiteLevel, "x", "y", ("white noise 1 - g = " + Format("%.3f", 1.0 - g)).c_str(),
+      grey, 1.5f, vtkPen::DASH_LINE);
+  }
+  if (std::isfinite(fg) && fg > 0.0)
+  {
+    powerMark = Segment(fg, 0.0, fg, pTop);
+    AddLine(powerChart, powerMark, "x", "y", ("principal frequency f_g = " + Format("%.3f", fg)).c_str(),
+      red, 1.5f, vtkPen::DASH_LINE);
+  }
+  powerChart->GetLegend()->SetHorizontalAlignment(vtkChartLegend::RIGHT);
+  powerChart->GetLegend()->SetVerticalAlignment(vtkChartLegend::BOTTOM);
+  powerChart->SetLayoutStrategy(vtkChart::AXES_TO_RECT);
+  powerChart->SetSize(AxesRect(0.5f * top, 0.5f * top));
+  view->GetScene()->AddItem(powerChart);
+
+  // Bottom: anisotropy in dB.
+  vtkNew<vtkChartXY> anisotropyChart;
+  const double aLow = std::floor(aMin - 1.0), aHigh = std::ceil(aMax + 1.0);
+  StyleChart(anisotropyChart, "Anisotropy (one realisation: isotropic noise is about 0 dB)",
+    "anisotropy (dB)", fMax, aLow, aHigh);
+  AddLine(anisotropyChart, anisotropyTable, "f", "dB", "Anisotropy (dB)", orange, 2.0f,
+    vtkPen::SOLID_LINE);
+  vtkSmartPointer<vtkTable> zeroLine = Segment(0.0, 0.0, fMax, 0.0), anisotropyMark;
+  AddLine(anisotropyChart, zeroLine, "x", "y", "0 dB", grey, 1.5f, vtkPen::DASH_LINE);
+  if (std::isfinite(fg) && fg > 0.0)
+  {
+    anisotropyMark = Segment(fg, aLow, fg, aHigh);
+    AddLine(anisotropyChart, anisotropyMark, "x", "y", "f_g", red, 1.5f, vtkPen::DASH_LINE);
+  }
+  anisotropyChart->GetLegend()->SetHorizontalAlignment(vtkChartLegend::RIGHT);
+  anisotropyChart->GetLegend()->SetVerticalAlignment(vtkChartLegend::BOTTOM);
+  anisotropyChart->SetLayoutStrategy(vtkChart::AXES_TO_RECT);
+  anisotropyChart->SetSize(AxesRect(0.0f, 0.5f * top));
+  view->GetScene()->AddItem(anisotropyChart);
+
+  // Overall title and the scalar metrics.
+  std::string metrics = "L(g) = " + Format("%.4f", FieldValue(spectrum, "LowFrequencyRatio")) +
+    "   S(g) = " + Format("%.4f", FieldValue(spectrum, "Symmetry")) +
+    "   T(g) = " + Format("%.4f", FieldValue(spectrum, "TargetValue"));
+  vtkNew<vtkTextActor> title;
+  title->SetInput((options.Title.empty() ? metrics : options.Title + "\n" + metrics).c_str());
+  title->GetTextProperty()->SetFontSize(17);
+  title->GetTextProperty()->SetColor(0.1, 0.1, 0.12);
+  title->GetTextProperty()->SetJustification(VTK_TEXT_CENTERED);
+  title->GetTextProperty()->SetVerticalJustification(VTK_TEXT_TOP);
+  title->GetPositionCoordinate()->SetCoordinateSystemToNormalizedViewport();
+  title->GetPositionCoordinate()->SetValue(0.5, 1.0 - 6.0 / h);
+  view->GetRenderer()->AddViewProp(title);
+
+  view->Render();
+  return Capture(window, errors, png, error);
+}
+}
