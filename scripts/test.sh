@@ -23,7 +23,7 @@ run_suite() { # name, cmake args...
 
 run_suite paraview -DParaView_DIR="$paraview_dir" || status=1
 run_suite vtk-only -DBLUENOISE_VTK_ONLY=ON -DVTK_DIR="$paraview_dir/vtk" || status=1
-vtk91="$root/_build/vtk-9.1-prefix"
+vtk91="$root/_build/prefix-vtk-9.1"
 bash "$root/scripts/unpack-vtk91.sh" "$vtk91"
 # The unpacked libraries are not in the loader's paths: their own dependencies
 # among themselves are found through LD_LIBRARY_PATH.
