@@ -40,7 +40,9 @@
  *
  * The filter samples whatever extent the pipeline hands it: under pvbatch with
  * MPI each rank samples its own piece (pieces do not exchange error, so piece
- * faces are treated like volume faces). Time is O(voxels), extra memory two
+ * faces are treated like volume faces). The default scalar range is the range
+ * of the array the filter is given, so pieces map densities alike only with
+ * DENSITY_IDENTITY, a transfer function, or UseCustomScalarRange. Time is O(voxels), extra memory two
  * layers of error and one layer of density besides the output. Progress is
  * reported per layer; abort is honoured between layers.
  *
