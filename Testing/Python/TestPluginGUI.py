@@ -17,25 +17,7 @@ import signal
 import subprocess
 import sys
 
-SKIP = 125
-FAILURES = []
-
-
-def check(condition, message):
-    print(("ok:   " if condition else "FAIL: ") + message, flush=True)
-    if not condition:
-        FAILURES.append(message)
-    return condition
-
-
-def finish():
-    if FAILURES:
-        print("\n%d check(s) failed:" % len(FAILURES))
-        for f in FAILURES:
-            print("  - " + f)
-        sys.exit(1)
-    print("\nall checks passed")
-    sys.exit(0)
+from bluenoise_testing import SKIP, check, finish
 
 
 def image_stats(path):

@@ -27,6 +27,8 @@ from paraview.simple import *  # noqa: F401,F403
 from paraview import servermanager
 from vtkmodules.util.numpy_support import vtk_to_numpy
 
+from bluenoise_testing import SKIP, FAILURES, check, finish
+
 try:
     # Not needed to use the plugin; with it, GetClientSideObject() returns the
     # sampler with its own methods rather than a vtkPolyDataAlgorithm.
@@ -35,26 +37,6 @@ try:
 except ImportError:
     print("note: the bluenoise Python package is not on PYTHONPATH; skipping client-side object checks")
     BLUENOISE_WRAPPED = False
-
-SKIP = 125
-FAILURES = []
-
-
-def check(condition, message):
-    print(("ok:   " if condition else "FAIL: ") + message, flush=True)
-    if not condition:
-        FAILURES.append(message)
-    return condition
-
-
-def finish():
-    if FAILURES:
-        print("\n%d check(s) failed:" % len(FAILURES))
-        for f in FAILURES:
-            print("  - " + f)
-        sys.exit(1)
-    print("\nall checks passed")
-    sys.exit(0)
 
 
 def field(data, name):

@@ -28,26 +28,10 @@ from paraview import servermanager
 from vtkmodules.vtkCommonDataModel import vtkDataObject
 from vtkmodules.util.numpy_support import vtk_to_numpy
 
-FAILURES = []
+from bluenoise_testing import check, finish
+
 PROXIES = ("ErrorDiffusionSampler", "BlueNoiseSpectrum")
 VECTOR_TAGS = ("IntVectorProperty", "DoubleVectorProperty", "StringVectorProperty", "ProxyProperty")
-
-
-def check(condition, message):
-    print(("ok:   " if condition else "FAIL: ") + message, flush=True)
-    if not condition:
-        FAILURES.append(message)
-    return condition
-
-
-def finish():
-    if FAILURES:
-        print("\n%d check(s) failed:" % len(FAILURES))
-        for f in FAILURES:
-            print("  - " + f)
-        sys.exit(1)
-    print("\nall checks passed")
-    sys.exit(0)
 
 
 # ---------------------------------------------------------------------------

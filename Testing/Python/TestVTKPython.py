@@ -17,16 +17,8 @@ from vtkmodules.vtkCommonCore import vtkCommand
 from vtkmodules.vtkCommonDataModel import vtkPiecewiseFunction
 from vtkmodules.vtkImagingCore import vtkRTAnalyticSource
 
-FAILURES = []
+from bluenoise_testing import check, finish
 
-
-def check(condition, message):
-    if condition:
-        print("ok:   " + message)
-    else:
-        print("FAIL: " + message)
-        FAILURES.append(message)
-    return condition
 
 
 class ErrorCatcher:
@@ -320,9 +312,4 @@ check(math.isclose(field_value(sp.GetOutput(), "LowFrequencyRatio"), L, rel_tol=
 
 check("paraview" not in sys.modules and "paraview.simple" not in sys.modules, "ran without paraview")
 
-if FAILURES:
-    print("\n%d check(s) failed:" % len(FAILURES))
-    for f in FAILURES:
-        print("  - " + f)
-    sys.exit(1)
-print("\nall checks passed")
+finish()
