@@ -19,7 +19,6 @@ returns the wrapped vtkErrorDiffusionSampler / vtkBlueNoiseSpectrum).
 import argparse
 import math
 import os
-import sys
 import tempfile
 import xml.etree.ElementTree as ET
 
