@@ -115,6 +115,11 @@ def main():
         check(result["points"] > 1000, "the sampler made %d points" % result["points"])
     if "spectrum_rows" in result:
         check(result["spectrum_rows"] > 10, "the spectrum has %d rows" % result["spectrum_rows"])
+    if result.get("finished"):
+        check(result["chart_x_array"] == "Frequency",
+              "the spectrum chart plots against Frequency (%r)" % result["chart_x_array"])
+        check(sorted(result["chart_visible_series"]) == ["Anisotropy", "RadialPower"],
+              "the chart shows RadialPower and Anisotropy (%r)" % result["chart_visible_series"])
 
     for key, what in (("screenshot", "render view"), ("chart_screenshot", "spectrum chart")):
         path = result.get(key)

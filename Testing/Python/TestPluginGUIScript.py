@@ -69,6 +69,10 @@ try:
     AssignViewToLayout(view=chart, layout=CreateLayout("Spectrum"))
     chart_display = Show(spectrum, chart)
     result["chart_representation"] = chart_display.GetXMLName()
+    result["chart_x_array"] = chart_display.XArrayName if not chart_display.UseIndexForXAxis else ""
+    result["chart_visible_series"] = [
+        name for name, visible in zip(chart_display.SeriesVisibility[0::2],
+                                      chart_display.SeriesVisibility[1::2]) if visible == "1"]
     Render(chart)
     result["spectrum_rows"] = spectrum.GetDataInformation().GetNumberOfRows()
     chart_shot = os.path.join(OUT, "spectrum.png")
