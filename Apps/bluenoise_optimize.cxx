@@ -45,7 +45,9 @@ void Usage(std::ostream& os)
         "  --resume           keep the levels already in FILE and do the others\n";
 }
 
-std::string Comment(const LevelResult& r)
+// One comment line per level: the whole-volume figures the search minimised,
+// the start point's, and the interior's (faces cropped) of the result.
+std::string Comment(const LevelResult& r, const vtkErrorDiffusionOptimizer::Metrics& interior)
 {
   std::ostringstream s;
   s.precision(6);
@@ -53,7 +55,8 @@ std::string Comment(const LevelResult& r)
     << " L=" << r.OptimizedMetrics.LowFrequencyRatio << " S=" << r.OptimizedMetrics.Symmetry
     << " anisotropy_dB=" << r.OptimizedMetrics.AnisotropyDB << " (start T=" << r.StartMetrics.Target
     << " L=" << r.StartMetrics.LowFrequencyRatio << " S=" << r.StartMetrics.Symmetry
-    << ") evaluations=" << r.Evaluations;
+    << ") interior T=" << interior.Target << " L=" << interior.LowFrequencyRatio
+    << " S=" << interior.Symmetry << " evaluations=" << r.Evaluations;
   return s.str();
 }
 
@@ -216,7 +219,9 @@ int main(int argc, char* argv[])
          << "cube " << settings.GridSize << "^3, seeds 0.." << settings.Seeds - 1
          << " averaged, w = " << settings.Weight << ", Nelder-Mead budget "
          << settings.MaximumEvaluations << " per level, start " << start
-         << ", ModulationScale " << settings.ModulationScale << ", steady-state boundaries";
+         << ", ModulationScale " << settings.ModulationScale << ", steady-state boundaries;\n"
+         << "interior: the same seeds with the faces cropped by " << settings.CropFaces
+         << " voxels";
 
   std::mutex lock;
   std::atomic<size_t> next{ 0 };
@@ -238,11 +243,15 @@ int main(int argc, char* argv[])
                       << std::endl;
           }
         });
+      vtkErrorDiffusionOptimizer::Evaluation interior;
+      vtkErrorDiffusionOptimizer::Evaluate(
+        vtkErrorDiffusionOptimizer::SingleKeyTable(result.Optimized, level), level, settings,
+        interior, true);
       std::lock_guard<std::mutex> guard(lock);
-      done[level] = { result.Optimized, Comment(result) };
+      done[level] = { result.Optimized, Comment(result, interior.Interior) };
       const double seconds =
         std::chrono::duration<double>(std::chrono::steady_clock::now() - begin).count();
-      std::cout << Comment(result) << " [" << seconds << " s]" << std::endl;
+      std::cout << done[level].second << " [" << seconds << " s]" << std::endl;
       if (!WriteTable(output, done, header.str()))
       {
         std::cerr << "bluenoise-optimize: cannot write " << output << "\n";
