@@ -23,14 +23,7 @@ import paraview.simple as pvs
 from paraview import servermanager
 from vtkmodules.util.numpy_support import vtk_to_numpy
 
-FAILURES = []
-
-
-def check(condition, message):
-    print(("ok:   " if condition else "FAIL: ") + message, flush=True)
-    if not condition:
-        FAILURES.append(message)
-    return bool(condition)
+from bluenoise_testing import check, summary
 
 
 def main():
@@ -100,11 +93,7 @@ def main():
     pvs.Render(view)
     pvs.SaveScreenshot(args.out, view, ImageResolution=[240, 240])
     check(os.path.exists(args.out), "screenshot %s" % args.out)
-    if FAILURES:
-        print("\n%d check(s) failed" % len(FAILURES))
-        return 1
-    print("\nMACRO CHECKS PASSED")
-    return 0
+    return summary("MACRO CHECKS PASSED")
 
 
 if __name__ == "__main__":

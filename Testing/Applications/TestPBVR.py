@@ -25,19 +25,13 @@ import subprocess
 import sys
 import time
 
+from bluenoise_testing import check, summary
+
 SKIP = 125
-FAILURES = []
 # Loguru stack-trace lines ("  7  0x7f... symbol") are left out of the echoed output.
 STACK_LINE = re.compile(r"^\s*\d+\s+0x[0-9a-f]+")
 X_FAILURES = ("bad X server connection", "cannot open display", "Xvfb failed to start",
               "xvfb-run: error: Xvfb failed")
-
-
-def check(condition, message):
-    print(("ok:   " if condition else "FAIL: ") + message, flush=True)
-    if not condition:
-        FAILURES.append(message)
-    return bool(condition)
 
 
 def run(cmd, timeout):
@@ -147,11 +141,7 @@ def main():
         check(rc == 0, "the macro script exited with 0 (%s) in %.1f s" % (rc, seconds))
         check("MACRO CHECKS PASSED" in out, "the macro script's checks passed")
 
-    if FAILURES:
-        print("\n%d check(s) failed" % len(FAILURES))
-        return 1
-    print("\nall checks passed")
-    return 0
+    return summary()
 
 
 if __name__ == "__main__":

@@ -25,14 +25,7 @@ from vtkmodules.util.numpy_support import numpy_to_vtk, vtk_to_numpy
 from vtkmodules.vtkCommonCore import vtkIdList, vtkPoints
 from vtkmodules.vtkCommonDataModel import vtkImageData, vtkPolyData, vtkStaticPointLocator
 
-FAILURES = []
-
-
-def check(condition, message):
-    print(("ok:   " if condition else "FAIL: ") + message, flush=True)
-    if not condition:
-        FAILURES.append(message)
-    return bool(condition)
+from bluenoise_testing import check, summary
 
 
 def volume(n=48):
@@ -138,11 +131,7 @@ def main():
           "WN counts vary between seeds like a binomial draw (std %.1f, binomial %.1f)"
           % (np.std(counts), sigma))
 
-    if FAILURES:
-        print("\n%d check(s) failed" % len(FAILURES))
-        return 1
-    print("\nall checks passed")
-    return 0
+    return summary()
 
 
 if __name__ == "__main__":

@@ -25,14 +25,7 @@ import sys
 
 import numpy as np
 
-FAILURES = []
-
-
-def check(condition, message):
-    print(("ok:   " if condition else "FAIL: ") + message, flush=True)
-    if not condition:
-        FAILURES.append(message)
-    return bool(condition)
+from bluenoise_testing import check, summary
 
 
 def main():
@@ -122,11 +115,7 @@ def main():
           "fewer poor tetrahedra (radius ratio > 3) from ED: %.3f < %.3f"
           % (mean["ED"]["frac_poor"], mean["WN"]["frac_poor"]))
 
-    if FAILURES:
-        print("\n%d check(s) failed" % len(FAILURES))
-        return 1
-    print("\nall checks passed")
-    return 0
+    return summary()
 
 
 if __name__ == "__main__":

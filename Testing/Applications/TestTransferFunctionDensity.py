@@ -25,14 +25,7 @@ from bluenoise import vtkErrorDiffusionSampler
 from vtkmodules.util.numpy_support import numpy_to_vtk, vtk_to_numpy
 from vtkmodules.vtkCommonDataModel import vtkImageData, vtkPiecewiseFunction
 
-FAILURES = []
-
-
-def check(condition, message):
-    print(("ok:   " if condition else "FAIL: ") + message, flush=True)
-    if not condition:
-        FAILURES.append(message)
-    return bool(condition)
+from bluenoise_testing import check, summary
 
 
 def volume(n=40):
@@ -118,11 +111,7 @@ def main():
                       "%s: after the function changed, the new band [50, 58] is empty and the old "
                       "one sampled" % what)
                 f.DeepCopy(make_function(band))
-    if FAILURES:
-        print("\n%d check(s) failed" % len(FAILURES))
-        return 1
-    print("\nall checks passed")
-    return 0
+    return summary()
 
 
 if __name__ == "__main__":

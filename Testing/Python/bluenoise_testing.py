@@ -1,4 +1,4 @@
-"""Check reporting shared by the Python tests: every check prints a line, and
+"""Check reporting shared by the Python tests (Testing/Python, Testing/Applications): every check prints a line, and
 finish() exits non-zero when any failed (ctest reads the exit code)."""
 import sys
 
@@ -13,11 +13,16 @@ def check(condition, message):
     return condition
 
 
-def finish():
+def summary(passed="all checks passed"):
+    """Prints the outcome; returns the exit status (1 when a check failed)."""
     if FAILURES:
         print("\n%d check(s) failed:" % len(FAILURES))
         for f in FAILURES:
             print("  - " + f)
-        sys.exit(1)
-    print("\nall checks passed")
-    sys.exit(0)
+        return 1
+    print("\n" + passed)
+    return 0
+
+
+def finish():
+    sys.exit(summary())
