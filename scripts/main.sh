@@ -8,15 +8,8 @@
 # Usage: bash scripts/main.sh [VOLUME] [--output DIR] [--points N] [--no-pictures] ...
 set -euo pipefail
 root="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
-bash "$root/scripts/install-deps.sh" >&2
-
+bash "$root/scripts/build-release.sh"
 dir="$root/_build/main"
-{
-  cmake -S "$root" -B "$dir" -G Ninja -DCMAKE_BUILD_TYPE=Release \
-    -DParaView_DIR=/usr/lib/x86_64-linux-gnu/cmake/paraview-5.11 \
-    -DBUILD_TESTING=OFF -DBLUENOISE_BUILD_BENCHMARKS=OFF
-  cmake --build "$dir" -j "$(nproc)"
-} >&2
 program=("$dir/bin/bluenoise-sample" "$@")
 if [ -z "${DISPLAY:-}" ] && command -v xvfb-run >/dev/null 2>&1; then
   # -a takes the first free display from -n on; a random start keeps two

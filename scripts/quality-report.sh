@@ -5,14 +5,8 @@
 # Usage: bash scripts/quality-report.sh [extra bluenoise-quality options]
 set -euo pipefail
 root="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
-bash "$root/scripts/install-deps.sh" >&2
+bash "$root/scripts/build-release.sh"
 dir="$root/_build/main"
-{
-  cmake -S "$root" -B "$dir" -G Ninja -DCMAKE_BUILD_TYPE=Release \
-    -DParaView_DIR=/usr/lib/x86_64-linux-gnu/cmake/paraview-5.11 \
-    -DBUILD_TESTING=OFF -DBLUENOISE_BUILD_BENCHMARKS=OFF
-  cmake --build "$dir" -j "$(nproc)"
-} >&2
 report="$root/Testing/QualityReport.md"
 {
   echo "# Quality report of the parameter sets"

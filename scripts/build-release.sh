@@ -1,0 +1,12 @@
+#!/usr/bin/env bash
+# Installs the packages and builds the programs (no tests) in _build/main; the
+# build output goes to stderr. Used by main.sh and quality-report.sh.
+set -euo pipefail
+root="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
+{
+  bash "$root/scripts/install-deps.sh"
+  cmake -S "$root" -B "$root/_build/main" -G Ninja -DCMAKE_BUILD_TYPE=Release \
+    -DParaView_DIR=/usr/lib/x86_64-linux-gnu/cmake/paraview-5.11 \
+    -DBUILD_TESTING=OFF -DBLUENOISE_BUILD_BENCHMARKS=OFF
+  cmake --build "$root/_build/main" -j "$(nproc)"
+} >&2
