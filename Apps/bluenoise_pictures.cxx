@@ -75,6 +75,18 @@ public:
   std::string Messages;
 };
 
+// The settings both pictures share: off-screen, fixed size, no multisampling
+// (exact pixels), on the session's display, with errors collected.
+void PrepareOffScreen(const bluenoise::PictureSession& session, vtkRenderWindow* window,
+  ErrorCollector* errors, int width, int height)
+{
+  session.Attach(window);
+  errors->Watch(window);
+  window->SetOffScreenRendering(1);
+  window->SetSize(width, height);
+  window->SetMultiSamples(0);
+}
+
 std::string DisplayName()
 {
   const char* display = std::getenv("DISPLAY");
@@ -395,12 +407,8 @@ bool WriteSamplesPicture(const PictureSession& session, vtkPolyData* samples,
   const double half = 0.5 * std::max(options.SlabThickness, 1e-12);
 
   vtkNew<vtkRenderWindow> window;
-  session.Attach(window);
   vtkNew<ErrorCollector> errors;
-  errors->Watch(window);
-  window->SetOffScreenRendering(1);
-  window->SetSize(options.Width, options.Height);
-  window->SetMultiSamples(0);
+  PrepareOffScreen(session, window, errors, options.Width, options.Height);
 
   // Left: every point in 3D, seen from -x, a little from +y and from above
   // (for a brain in RAS orientation such as the MNI templates: from the left,
@@ -556,12 +564,8 @@ bool WriteSpectrumPlot(const PictureSession& session, vtkTable* spectrum,
 
   vtkNew<vtkContextView> view;
   vtkRenderWindow* window = view->GetRenderWindow();
-  session.Attach(window);
   vtkNew<ErrorCollector> errors;
-  errors->Watch(window);
-  window->SetOffScreenRendering(1);
-  window->SetSize(options.Width, options.Height);
-  window->SetMultiSamples(0);
+  PrepareOffScreen(session, window, errors, options.Width, options.Height);
   view->GetRenderer()->SetBackground(1.0, 1.0, 1.0);
 
   const float w = static_cast<float>(options.Width);
