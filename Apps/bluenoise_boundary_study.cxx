@@ -99,7 +99,7 @@ int main(int argc, char* argv[])
       std::vector<unsigned char> mask(layer * L), inside(static_cast<size_t>(inner) * inner * inner);
       for (int z = 0; z < L; ++z)
       {
-        kernel.ProcessLayer(density.data(), mask.data() + z * layer);
+        kernel.ProcessLayer(density.data(), density.data(), mask.data() + z * layer); // constant density
       }
       size_t o = 0;
       for (int z = crop; z < L - crop; ++z)

@@ -17,6 +17,13 @@ int PositiveModulo4(int i)
   return ((i % 4) + 4) % 4;
 }
 
+// A voxel that takes part in the diffusion: 0 < g < 1. Saturated voxels (and
+// NaN) have a fixed outcome, so error sent to them would be lost.
+inline bool Active(float g)
+{
+  return g > 0.0f && g < 1.0f;
+}
+
 // Calibrated charges per (table, modulation scale): calibration costs a few
 // milliseconds, a sampler may run many times with the same parameters.
 std::mutex ChargeCacheMutex;
@@ -98,6 +105,7 @@ void vtkErrorDiffusionKernel::Begin(int nx, int ny, int nz, int firstLayer)
   this->NZ = std::max(nz, 0);
   this->FirstLayer = firstLayer;
   this->LayersDone = 0;
+  this->TestedLayer = nullptr;
   const size_t layer = static_cast<size_t>(this->NX) * static_cast<size_t>(this->NY);
   this->Current.assign(layer, 0.0f);
   this->Next.assign(layer, 0.0f);
@@ -154,7 +162,7 @@ std::vector<float> vtkErrorDiffusionKernel::GetSteadyStateCharges(
     long count = 0;
     for (int layer = 0; layer < settle + measured; ++layer)
     {
-      probe.ScanLayer(density.data(), mask.data(), layer, true);
+      probe.ScanRows<true>(density.data(), density.data(), mask.data(), layer);
       if (layer >= settle)
       {
         for (int y = margin; y < n - margin; ++y)
@@ -204,7 +212,8 @@ float vtkErrorDiffusionKernel::ChargeAt(float g) const
 }
 
 //------------------------------------------------------------------------------
-vtkIdType vtkErrorDiffusionKernel::ProcessLayer(const float* density, unsigned char* mask)
+vtkIdType vtkErrorDiffusionKernel::ProcessLayer(
+  const float* density, const float* nextDensity, unsigned char* mask)
 {
   if (this->NX == 0 || this->NY == 0)
   {
@@ -217,19 +226,31 @@ vtkIdType vtkErrorDiffusionKernel::ProcessLayer(const float* density, unsigned c
   const bool steady = this->BoundaryMode == BOUNDARY_STEADY_STATE;
   if (this->LayersDone == 0 && steady && this->WarmUpLayers > 0)
   {
-    // Whole cycles, so layer 0 keeps its phase.
+    // Whole cycles, so layer 0 keeps its phase. The virtual layers repeat the
+    // first layer, so each one's successor has the first layer's densities.
     const int warmUp = 4 * ((this->WarmUpLayers + 3) / 4);
     std::vector<unsigned char> discarded(this->Current.size());
     for (int w = 0; w < warmUp; ++w)
     {
-      this->ScanLayer(density, discarded.data(), this->FirstLayer - warmUp + w, true);
+      this->ScanLayer(density, density, discarded.data(), this->FirstLayer - warmUp + w);
       std::swap(this->Current, this->Next);
       std::fill(this->Next.begin(), this->Next.end(), 0.0f);
     }
   }
-  const bool nextLayerExists = steady || this->LayersDone + 1 < this->NZ;
+  // Past the last layer the steady-state mode lets the error leave through an
+  // open layer whose voxels all take error; the paper's keeps it in the layer.
+  const float* next = nextDensity;
+  if (this->LayersDone + 1 >= this->NZ)
+  {
+    next = nullptr;
+    if (steady)
+    {
+      this->OpenLayer.resize(this->Current.size(), 0.5f);
+      next = this->OpenLayer.data();
+    }
+  }
   const vtkIdType count =
-    this->ScanLayer(density, mask, this->FirstLayer + this->LayersDone, nextLayerExists);
+    this->ScanLayer(density, next, mask, this->FirstLayer + this->LayersDone);
   std::swap(this->Current, this->Next);
   std::fill(this->Next.begin(), this->Next.end(), 0.0f);
   ++this->LayersDone;
@@ -255,9 +276,69 @@ vtkIdType vtkErrorDiffusionKernel::DrawLayerIndependently(
 }
 
 //------------------------------------------------------------------------------
-vtkIdType vtkErrorDiffusionKernel::ScanLayer(
-  const float* density, unsigned char* mask, int layer, bool nextLayerExists)
+namespace
 {
+// True when no voxel of the layer is saturated or empty. Fixed-size blocks
+// with a branch-free body, so the compiler vectorises them; the test still
+// stops at the first block with an inactive voxel.
+bool AllActive(const float* g, size_t n)
+{
+  constexpr size_t block = 256;
+  size_t i = 0;
+  for (; i + block <= n; i += block)
+  {
+    int inactive = 0;
+    for (size_t j = 0; j < block; ++j)
+    {
+      inactive |= static_cast<int>(!(g[i + j] > 0.0f)) | static_cast<int>(!(g[i + j] < 1.0f));
+    }
+    if (inactive)
+    {
+      return false;
+    }
+  }
+  for (; i < n; ++i)
+  {
+    if (!Active(g[i]))
+    {
+      return false;
+    }
+  }
+  return true;
+}
+}
+
+//------------------------------------------------------------------------------
+// The scan of one layer. Record keeps what each voxel received (for
+// GetSteadyStateCharges) and costs a store per voxel, so it is a template
+// flag. Rows away from the faces of a layer whose voxels and successors are
+// all active take a path without any test on the targets: that is the bulk
+// of the work on any large support, and the tests cost a third of the time.
+template <bool Record>
+vtkIdType vtkErrorDiffusionKernel::ScanRows(
+  const float* density, const float* next, unsigned char* mask, int layer)
+{
+  const bool nextLayerExists = next != nullptr;
+  const size_t layerSize = static_cast<size_t>(this->NX) * this->NY;
+  // A layer is tested once, as the successor, and the answer reused when it
+  // comes up as the current layer (the caller passes the same densities).
+  bool currentActive = false;
+  if (density == this->TestedLayer)
+  {
+    currentActive = this->TestedLayerActive;
+  }
+  else
+  {
+    currentActive = AllActive(density, layerSize);
+  }
+  bool nextActive = false;
+  if (nextLayerExists)
+  {
+    nextActive = next == density ? currentActive : AllActive(next, layerSize);
+    this->TestedLayer = next;
+    this->TestedLayerActive = nextActive;
+  }
+  const bool allActive = currentActive && nextActive;
   const LayerScan s = GetLayerScan(this->NX, this->NY, layer);
   float* cur = this->Current.data();
   float* nxt = this->Next.data();
@@ -278,13 +359,17 @@ vtkIdType vtkErrorDiffusionKernel::ScanLayer(
     const bool hasPrevRow = q > 0;
     const bool hasNextRow = q + 1 < s.NV;
     const bool fullRow = hasPrevRow && hasNextRow && nextLayerExists;
+    const bool fastRow = fullRow && allActive;
     // The share for the next voxel of the row stays in a register: it is the
     // only dependency from one voxel to the next.
     float carry = 0.0f;
     for (int p = 0; p < s.NU; ++p, idx += d)
     {
       const float g = density[idx];
-      if (!(g > 0.0f) || g >= 1.0f)
+      const bool hasPrevU = p > 0;
+      const bool hasNextU = p + 1 < s.NU;
+      const bool fast = fastRow && hasPrevU && hasNextU;
+      if (!fast && !Active(g))
       {
         const unsigned char b = g >= 1.0f ? 1 : 0;
         mask[idx] = b;
@@ -302,16 +387,19 @@ vtkIdType vtkErrorDiffusionKernel::ScanLayer(
         cachedG = g;
       }
       const float value = (g + cur[idx]) + carry; // g + cur[idx] is off the critical path
-      cur[idx] = value - g; // all the voxel received, read by GetSteadyStateCharges
+      if (Record)
+      {
+        cur[idx] = value - g;
+      }
       const float threshold = base + modulation * this->Random.Uniform();
+      // Branch-free: near g = 0.5 a branch on the outcome is mispredicted
+      // half of the time.
       const unsigned char b = value >= threshold ? 1 : 0;
       mask[idx] = b;
       count += b;
       const float e = value - static_cast<float>(b);
 
-      const bool hasPrevU = p > 0;
-      const bool hasNextU = p + 1 < s.NU;
-      if (fullRow && hasPrevU && hasNextU)
+      if (fast)
       {
         // value * w - b * w: the product does not wait for the comparison.
         const float taken = value >= threshold ? w[TARGET_U] : 0.0f;
@@ -323,9 +411,15 @@ vtkIdType vtkErrorDiffusionKernel::ScanLayer(
         nxt[idx] += e * w[TARGET_Z];
         continue;
       }
-      // A face: the targets that exist share the error in proportion to their weights.
-      const bool valid[6] = { hasNextU, hasPrevU && hasNextRow, hasNextRow,
-        hasPrevRow && nextLayerExists, hasPrevU && nextLayerExists, nextLayerExists };
+      // A face of the volume or of the support (saturated voxels around): the
+      // targets that exist and are active share the error in proportion to
+      // their weights.
+      const bool valid[6] = { hasNextU && Active(density[idx + d]),
+        hasPrevU && hasNextRow && Active(density[idx - d + V]),
+        hasNextRow && Active(density[idx + V]),
+        hasPrevRow && nextLayerExists && Active(next[idx - V]),
+        hasPrevU && nextLayerExists && Active(next[idx - d]),
+        nextLayerExists && Active(next[idx]) };
       float sum = 0.0f;
       for (int t = 0; t < 6; ++t)
       {
@@ -334,7 +428,7 @@ vtkIdType vtkErrorDiffusionKernel::ScanLayer(
       carry = 0.0f;
       if (!(sum > 0.0f))
       {
-        continue; // the last voxel of the volume: nowhere to go
+        continue; // no active target: the error has nowhere to go
       }
       const float f = e / sum;
       if (valid[TARGET_U])
@@ -364,4 +458,11 @@ vtkIdType vtkErrorDiffusionKernel::ScanLayer(
     }
   }
   return count;
+}
+
+//------------------------------------------------------------------------------
+vtkIdType vtkErrorDiffusionKernel::ScanLayer(
+  const float* density, const float* next, unsigned char* mask, int layer)
+{
+  return this->ScanRows<false>(density, next, mask, layer);
 }

@@ -31,8 +31,15 @@
  * paper's "the minority voxels of g and 1 - g are alike").
  *
  * Voxels with g <= 0 (NaN included) are never sampled and g >= 1 always
- * sampled; both absorb the error that reaches them, so an empty region stays
- * empty and error does not leak across it.
+ * sampled. Neither takes part in the diffusion: they are treated like the
+ * missing neighbours at a face of the volume, so the error of a voxel next to
+ * them goes, renormalised, to its active targets (0 < g < 1) only. An empty
+ * region stays empty, no error leaks across it, and the rim of the support
+ * keeps the error of its neighbours, so it is sampled like the inside (when
+ * empty voxels absorbed the error instead, the voxels within 1.5 voxels of
+ * empty space got about half of their expected samples). Deciding this for
+ * the targets in the next layer is why ProcessLayer needs that layer's
+ * densities.
  *
  * Boundaries and start-up (the count N = sum of g is kept in expectation):
  * - BOUNDARY_RENORMALIZE, the paper-faithful behaviour: the threshold is the
@@ -51,10 +58,10 @@
  *   only translates the error by C: the settled process makes the same
  *   decisions, but an empty buffer is now its mean state, so no charging is
  *   needed, a rise of density along the scan is followed at once, and error
- *   leaving the volume or absorbed by empty voxels has zero mean. WarmUpLayers
+ *   leaving the volume has zero mean. WarmUpLayers
  *   virtual layers with the first layer's density then settle the buffers'
  *   fluctuations, and the error the last layer passes on leaves the volume.
- *   Lateral faces renormalise as above. Whole-volume and interior mean
+ *   Lateral faces and the faces of the support renormalise as above. Whole-volume and interior mean
  *   anisotropy agree within 0.15 dB at every key level from 8/255 (128^3).
  *   Caveat: a region that starts after empty voxels (importance sampling)
  *   has no warm-up; at g = 0.01 its first layers hold about 2% too few
@@ -142,10 +149,14 @@ public:
   void Begin(int nx, int ny, int nz, int firstLayer = 0);
 
   /**
-   * Sample the next layer. density: nx * ny values, x fastest; mask receives
-   * 0 or 1 per voxel in the same layout. Returns the number of samples.
+   * Sample the next layer. density: nx * ny values, x fastest; nextDensity:
+   * the densities of the layer after it, in the same layout (ignored for the
+   * last layer; nullptr before it means that no voxel of the next layer takes
+   * error). mask receives 0 or 1 per voxel. Returns the number of samples.
+   * The next call's density must hold what nextDensity held (it may be the
+   * same buffer, unchanged).
    */
-  vtkIdType ProcessLayer(const float* density, unsigned char* mask);
+  vtkIdType ProcessLayer(const float* density, const float* nextDensity, unsigned char* mask);
 
   /// Layers processed since Begin().
   int GetLayersDone() const { return this->LayersDone; }
@@ -168,8 +179,10 @@ private:
     inline float Uniform();
   };
 
-  vtkIdType ScanLayer(
-    const float* density, unsigned char* mask, int phase, bool nextLayerExists);
+  // next: the densities of the following layer, nullptr if it takes no error.
+  vtkIdType ScanLayer(const float* density, const float* next, unsigned char* mask, int phase);
+  template <bool Record>
+  vtkIdType ScanRows(const float* density, const float* next, unsigned char* mask, int phase);
   float ChargeAt(float g) const;
   vtkIdType DrawLayerIndependently(const float* density, unsigned char* mask);
 
@@ -190,6 +203,9 @@ private:
   std::vector<float> KeyCharges; // C at each key level
   std::vector<float> Current; // error accumulated for the layer being scanned
   std::vector<float> Next;    // error passed on to the following layer
+  std::vector<float> OpenLayer; // the layer past the last one (steady state): all active
+  const float* TestedLayer = nullptr; // the last successor layer tested, and whether
+  bool TestedLayerActive = false;     // all of its voxels were active
 };
 
 #endif

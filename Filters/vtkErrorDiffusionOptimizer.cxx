@@ -56,7 +56,7 @@ bool Measure(const vtkErrorDiffusionParameterTable& table, double level,
     kernel.Begin(n, n, n);
     for (int z = 0; z < n; ++z)
     {
-      kernel.ProcessLayer(density.data(), mask.data() + z * layer);
+      kernel.ProcessLayer(density.data(), density.data(), mask.data() + z * layer); // constant density
     }
     if (!whole.AddRealisation(mask.data(), error))
     {

@@ -5,6 +5,8 @@
 #include "vtkDataArrayRange.h"
 #include "vtkDoubleArray.h"
 #include "vtkErrorDiffusionKernel.h"
+#include "vtkErrorDiffusionLayerRunner.h"
+#include "vtkErrorDiffusionPointAssembler.h"
 #include "vtkErrorDiffusionParameterTable.h"
 #include "vtkFieldData.h"
 #include "vtkFloatArray.h"
@@ -18,7 +20,6 @@
 #include "vtkPointData.h"
 #include "vtkPoints.h"
 #include "vtkPolyData.h"
-#include "vtkSMPTools.h"
 #include "vtkTypeInt32Array.h"
 #include "vtkTypeInt64Array.h"
 #include "vtkStreamingDemandDrivenPipeline.h"
@@ -28,6 +29,7 @@
 #include <algorithm>
 #include <cmath>
 #include <numeric>
+#include <thread>
 #include <type_traits>
 #include <vector>
 
@@ -38,6 +40,9 @@ namespace
 {
 // The mapping used for a scalar range of zero width.
 constexpr int DENSITY_STEP = -1;
+
+// Below this a second thread costs more than it saves.
+constexpr vtkIdType MIN_VOXELS_FOR_WORKER_THREAD = 32768;
 
 // Array value -> density in [0, 1].
 struct DensityMap
@@ -110,41 +115,6 @@ void FillLayerDensity(vtkDataArray* array, vtkIdType begin, vtkIdType end, int c
   }
 }
 
-// Voxel ids (relative to `extent`, increasing) to world coordinates, x y z
-// interleaved. The ids increase, so the layer index advances instead of being
-// divided out, and the in-layer index needs one 32-bit division.
-template <typename T>
-void WriteVoxelCentres(
-  const std::vector<vtkIdType>& ids, const int extent[6], const double m[16], T* xyz)
-{
-  const vtkIdType nx = extent[1] - extent[0] + 1;
-  const vtkIdType nxy = nx * (extent[3] - extent[2] + 1);
-  const bool small = nxy <= VTK_TYPE_UINT32_MAX;
-  vtkSMPTools::For(0, static_cast<vtkIdType>(ids.size()), [&](vtkIdType begin, vtkIdType end) {
-    vtkIdType k = ids[begin] / nxy;
-    for (vtkIdType p = begin; p < end; ++p)
-    {
-      const vtkIdType id = ids[p];
-      while (id >= (k + 1) * nxy)
-      {
-        ++k;
-      }
-      const vtkIdType inLayer = id - k * nxy;
-      const vtkIdType j = small
-        ? static_cast<vtkIdType>(static_cast<vtkTypeUInt32>(inLayer) / static_cast<vtkTypeUInt32>(nx))
-        : inLayer / nx;
-      const double x = static_cast<double>(extent[0] + (inLayer - j * nx));
-      const double y = static_cast<double>(extent[2] + j);
-      const double z = static_cast<double>(extent[4] + k);
-      for (int r = 0; r < 3; ++r)
-      {
-        xyz[3 * p + r] =
-          static_cast<T>(m[4 * r] * x + m[4 * r + 1] * y + m[4 * r + 2] * z + m[4 * r + 3]);
-      }
-    }
-  });
-}
-
 // One vertex cell per point; 32-bit storage when it fits, to halve the memory.
 vtkSmartPointer<vtkCellArray> MakeVertices(vtkIdType n)
 {
@@ -166,57 +136,6 @@ vtkSmartPointer<vtkCellArray> MakeVertices(vtkIdType n)
     fill(vtkSmartPointer<vtkTypeInt64Array>::New(), vtkSmartPointer<vtkTypeInt64Array>::New());
   }
   return verts;
-}
-
-// out[p] = in[ids[p]] for every tuple.
-struct GatherWorker
-{
-  template <typename InArrayT, typename OutArrayT>
-  void operator()(InArrayT* in, OutArrayT* out, const std::vector<vtkIdType>& ids) const
-  {
-    const auto src = vtk::DataArrayTupleRange(in);
-    auto dst = vtk::DataArrayTupleRange(out);
-    const vtkIdType n = static_cast<vtkIdType>(ids.size());
-    vtkSMPTools::For(0, n, [&](vtkIdType begin, vtkIdType end) {
-      for (vtkIdType p = begin; p < end; ++p)
-      {
-        dst[p] = src[ids[p]];
-      }
-    });
-  }
-};
-
-// Copies every array that CopyAllocate set up, for the sampled voxels.
-void GatherAttributes(
-  vtkDataSetAttributes* in, vtkDataSetAttributes* out, const std::vector<vtkIdType>& ids)
-{
-  const vtkIdType n = static_cast<vtkIdType>(ids.size());
-  for (int a = 0; a < out->GetNumberOfArrays(); ++a)
-  {
-    vtkAbstractArray* target = out->GetAbstractArray(a);
-    vtkAbstractArray* source = in->GetAbstractArray(target->GetName());
-    if (!source)
-    {
-      continue;
-    }
-    target->SetNumberOfTuples(n);
-    auto* sourceData = vtkDataArray::SafeDownCast(source);
-    auto* targetData = vtkDataArray::SafeDownCast(target);
-    if (sourceData && targetData)
-    {
-      using Dispatcher = vtkArrayDispatch::Dispatch2SameValueType;
-      GatherWorker worker;
-      if (!Dispatcher::Execute(sourceData, targetData, worker, ids))
-      {
-        worker(sourceData, targetData, ids);
-      }
-      continue;
-    }
-    for (vtkIdType p = 0; p < n; ++p) // strings and other non-numeric arrays
-    {
-      target->SetTuple(p, ids[p], source);
-    }
-  }
 }
 
 void AddFieldArray(vtkFieldData* fd, vtkDataArray* array, const char* name, int components)
@@ -455,7 +374,8 @@ int vtkErrorDiffusionSampler::RequestData(
     table = vtkErrorDiffusionParameterTable::Paper();
   }
 
-  // --- Sample layer by layer.
+  // --- Sample layer by layer: the scan on a worker thread, the points built
+  // here as its layers come in (or both in turn on this thread).
   vtkErrorDiffusionKernel kernel;
   kernel.SetParameters(table);
   kernel.SetModulationScale(this->ModulationScale);
@@ -466,8 +386,6 @@ int vtkErrorDiffusionSampler::RequestData(
   kernel.Begin(nx, ny, nz, extent[4]);
 
   const vtkIdType layerSize = static_cast<vtkIdType>(nx) * ny;
-  std::vector<float> density(layerSize);
-  std::vector<unsigned char> layerMask;
   vtkSmartPointer<vtkUnsignedCharArray> maskArray;
   if (this->GenerateMask)
   {
@@ -475,85 +393,50 @@ int vtkErrorDiffusionSampler::RequestData(
     maskArray->SetName("SampleMask");
     maskArray->SetNumberOfValues(voxels);
   }
-  else
-  {
-    layerMask.resize(layerSize);
-  }
-  std::vector<vtkIdType> sampleIds;
-  std::vector<float> sampleDensity;
 
-  const int progressStride = std::max(1, nz / 100);
-  for (int k = 0; k < nz; ++k)
-  {
-    if (k % progressStride == 0)
-    {
-      this->UpdateProgress(static_cast<double>(k) / nz);
-      if (this->IsAborted())
-      {
-        output->Initialize();
-        return 1;
-      }
-    }
+  vtkErrorDiffusionPointAssembler assembler;
+  assembler.Begin(input, output->GetPointData(),
+    this->OutputPointsPrecision == DOUBLE_PRECISION ? VTK_DOUBLE : VTK_FLOAT);
+  vtkSmartPointer<vtkCellArray> vertices;
+
+  vtkErrorDiffusionLayerRunner runner;
+  runner.SetThreaded(this->UseWorkerThread && nz > 1 &&
+    voxels >= MIN_VOXELS_FOR_WORKER_THREAD && std::thread::hardware_concurrency() > 1);
+  runner.SetFill([&](int k, float* density) {
     const vtkIdType first = k * layerSize;
-    FillLayerDensity(array, first, first + layerSize, this->Component, map, density.data());
-    unsigned char* bits = maskArray ? maskArray->GetPointer(first) : layerMask.data();
-    const vtkIdType found = kernel.ProcessLayer(density.data(), bits);
-    if (found == 0)
-    {
-      continue;
-    }
-    // Branch-free collection: at densities near 0.5 a branch per voxel would
-    // be mispredicted half of the time.
-    const size_t done = sampleIds.size();
-    sampleIds.resize(done + layerSize);
-    sampleDensity.resize(done + layerSize);
-    vtkIdType* ids = sampleIds.data() + done;
-    float* values = sampleDensity.data() + done;
-    vtkIdType n = 0;
-    for (vtkIdType i = 0; i < layerSize; ++i)
-    {
-      ids[n] = first + i;
-      values[n] = density[i];
-      n += bits[i];
-    }
-    sampleIds.resize(done + n);
-    sampleDensity.resize(done + n);
-  }
-
-  // --- Points at voxel centres, in world coordinates.
-  const vtkIdType n = static_cast<vtkIdType>(sampleIds.size());
-  double indexToPhysical[16];
-  vtkImageData::ComputeIndexToPhysicalMatrix(input->GetOrigin(), input->GetSpacing(),
-    input->GetDirectionMatrix()->GetData(), indexToPhysical);
-  vtkNew<vtkPoints> points;
-  if (this->OutputPointsPrecision == DOUBLE_PRECISION)
+    FillLayerDensity(array, first, first + layerSize, this->Component, map, density);
+  });
+  if (maskArray)
   {
-    points->SetDataType(VTK_DOUBLE);
-    points->SetNumberOfPoints(n);
-    WriteVoxelCentres(sampleIds, extent, indexToPhysical,
-      vtkDoubleArray::SafeDownCast(points->GetData())->GetPointer(0));
+    runner.SetMaskStorage([&](int k) { return maskArray->GetPointer(k * layerSize); });
   }
-  else
+  const int progressStride = std::max(1, nz / 100);
+  runner.SetConsume([&](const vtkErrorDiffusionLayerRunner::Layer& layer) {
+    assembler.AddLayer(layer.Index, layer.Density, layer.Mask, layer.Count);
+    if (layer.Index % progressStride == 0)
+    {
+      this->UpdateProgress(static_cast<double>(layer.Index + 1) / nz);
+      return !this->IsAborted();
+    }
+    return true;
+  });
+  // The vertex cells need only the count: the scan thread makes them while
+  // the points are being finished.
+  runner.SetFinish([&](vtkIdType samples) { vertices = MakeVertices(samples); });
+
+  this->UpdateProgress(0.0);
+  if (!runner.Run(kernel, nx, ny, nz))
   {
-    points->SetDataType(VTK_FLOAT);
-    points->SetNumberOfPoints(n);
-    WriteVoxelCentres(sampleIds, extent, indexToPhysical,
-      vtkFloatArray::SafeDownCast(points->GetData())->GetPointer(0));
+    output->Initialize();
+    if (!runner.GetError().empty())
+    {
+      vtkErrorMacro("Sampling failed: " << runner.GetError());
+      return 0;
+    }
+    return 1; // aborted
   }
-  output->SetPoints(points);
-  output->SetVerts(MakeVertices(n));
-
-  // --- Attributes of the sampled voxels.
-  vtkPointData* inPD = input->GetPointData();
-  vtkPointData* outPD = output->GetPointData();
-  outPD->CopyAllocate(inPD, n);
-  GatherAttributes(inPD, outPD, sampleIds);
-
-  vtkNew<vtkFloatArray> densityArray;
-  densityArray->SetName("Density");
-  densityArray->SetNumberOfValues(n);
-  std::copy(sampleDensity.begin(), sampleDensity.end(), densityArray->GetPointer(0));
-  outPD->AddArray(densityArray);
+  output->SetPoints(assembler.End());
+  output->SetVerts(vertices);
 
   // --- The sampling grid, for the spectrum.
   vtkFieldData* fd = output->GetFieldData();
@@ -601,4 +484,5 @@ void vtkErrorDiffusionSampler::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "WarmUpLayers: " << this->WarmUpLayers << "\n";
   os << indent << "GenerateMask: " << this->GenerateMask << "\n";
   os << indent << "OutputPointsPrecision: " << this->OutputPointsPrecision << "\n";
+  os << indent << "UseWorkerThread: " << this->UseWorkerThread << "\n";
 }

@@ -42,9 +42,11 @@
  * MPI each rank samples its own piece (pieces do not exchange error, so piece
  * faces are treated like volume faces). The default scalar range is the range
  * of the array the filter is given, so pieces map densities alike only with
- * DENSITY_IDENTITY, a transfer function, or UseCustomScalarRange. Time is O(voxels), extra memory two
- * layers of error and one layer of density besides the output. Progress is
- * reported per layer; abort is honoured between layers.
+ * DENSITY_IDENTITY, a transfer function, or UseCustomScalarRange. Time is
+ * O(voxels); extra memory besides the output is a few layers (two of error,
+ * four of densities and masks). The scan runs on a worker thread while this
+ * thread builds the points (UseWorkerThread). Progress is reported per layer;
+ * abort is honoured between layers.
  *
  * Bad input (no array, non-numeric array, cell data, empty extent, component
  * out of range, negative or non-finite DensityScale or ModulationScale, a
@@ -235,6 +237,20 @@ public:
   vtkGetMacro(OutputPointsPrecision, int);
   ///@}
 
+  ///@{
+  /**
+   * Run the error-diffusion scan on a worker thread while the calling thread
+   * builds the output points, attributes and progress from the layers already
+   * scanned. The scan itself is sequential (each voxel depends on the one
+   * before), so this is the parallelism the method has; the output is
+   * identical either way. Used when the volume has at least 32768 voxels and
+   * two layers and the machine more than one hardware thread. Default on.
+   */
+  vtkSetMacro(UseWorkerThread, bool);
+  vtkGetMacro(UseWorkerThread, bool);
+  vtkBooleanMacro(UseWorkerThread, bool);
+  ///@}
+
   /// Output port 1: the mask image.
   vtkImageData* GetMaskOutput();
 
@@ -265,6 +281,7 @@ protected:
   int WarmUpLayers = 8;
   bool GenerateMask = false;
   int OutputPointsPrecision = SINGLE_PRECISION;
+  bool UseWorkerThread = true;
 
 private:
   vtkErrorDiffusionSampler(const vtkErrorDiffusionSampler&) = delete;

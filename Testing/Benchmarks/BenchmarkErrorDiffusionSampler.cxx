@@ -11,10 +11,18 @@
 
 #include <benchmark/benchmark.h>
 
+#include <algorithm>
 #include <vector>
 
 namespace
 {
+// With --benchmark_repetitions, the fastest run: on a shared virtual machine
+// the other aggregates mostly measure the neighbours.
+double Fastest(const std::vector<double>& v)
+{
+  return v.empty() ? 0.0 : *std::min_element(v.begin(), v.end());
+}
+
 void SetCounters(benchmark::State& state, double voxels, double samples)
 {
   state.counters["voxels/s"] =
@@ -39,13 +47,14 @@ void BM_Kernel(benchmark::State& state)
     samples = 0;
     for (int z = 0; z < L; ++z)
     {
-      samples += kernel.ProcessLayer(density.data(), mask.data());
+      samples += kernel.ProcessLayer(density.data(), density.data(), mask.data());
     }
     benchmark::DoNotOptimize(samples);
   }
   SetCounters(state, static_cast<double>(layer) * L, static_cast<double>(samples));
 }
 
+// The whole filter; range(2) = 1 runs the scan on a worker thread.
 void BM_Filter(benchmark::State& state)
 {
   const int L = static_cast<int>(state.range(0));
@@ -60,6 +69,7 @@ void BM_Filter(benchmark::State& state)
   vtkNew<vtkErrorDiffusionSampler> sampler;
   sampler->SetInputData(image);
   sampler->SetDensityMappingToIdentity();
+  sampler->SetUseWorkerThread(state.range(2) != 0);
   vtkIdType samples = 0;
   for (auto _ : state)
   {
@@ -71,6 +81,17 @@ void BM_Filter(benchmark::State& state)
 }
 }
 
-BENCHMARK(BM_Kernel)->Args({ 128, 8 })->Args({ 128, 127 })->Args({ 256, 8 })->Args({ 256, 127 })->Unit(benchmark::kMillisecond);
-BENCHMARK(BM_Filter)->Args({ 128, 8 })->Args({ 128, 127 })->Args({ 256, 8 })->Args({ 256, 127 })->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_Kernel)
+  ->Args({ 128, 8 })
+  ->Args({ 128, 127 })
+  ->Args({ 256, 8 })
+  ->Args({ 256, 127 })
+  ->ComputeStatistics("min", Fastest)
+  ->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_Filter)
+  ->ArgNames({ "L", "g255", "thread" })
+  ->ArgsProduct({ { 128, 256 }, { 8, 127 }, { 0, 1 } })
+  ->UseRealTime() // two threads: CPU time of the caller alone would flatter
+  ->ComputeStatistics("min", Fastest)
+  ->Unit(benchmark::kMillisecond);
 BENCHMARK_MAIN();

@@ -26,7 +26,7 @@ std::vector<unsigned char> ErrorDiffusion(float g, int seed)
   std::vector<unsigned char> mask(layer * L);
   for (int z = 0; z < L; ++z)
   {
-    kernel.ProcessLayer(density.data(), mask.data() + z * layer);
+    kernel.ProcessLayer(density.data(), density.data(), mask.data() + z * layer); // constant density
   }
   return mask;
 }

@@ -1,7 +1,9 @@
-// Same seed: the same points bit for bit; another seed: other points. Density
-// g and 1 - g with the same seed: complementary masks (the mirrored process).
+// Same seed: the same points bit for bit; another seed: other points; the scan
+// on a worker thread or not: the same output. Density g and 1 - g with the same
+// seed: complementary masks (the mirrored process).
 #include "SamplerTestUtilities.h"
 #include "vtkDataArray.h"
+#include "vtkPointData.h"
 #include "vtkPoints.h"
 
 #include <cstring>
@@ -51,6 +53,32 @@ int main()
   Check(a->GetNumberOfPoints() > 1000, "enough samples: " + Str(a->GetNumberOfPoints()));
   Check(SamePoints(a, b), "same seed gives the same points");
   Check(!SamePoints(a, c), "another seed gives other points");
+
+  // The worker thread changes who does the work, not the result: points and
+  // every point array the same, on a volume with empty and full voxels.
+  {
+    auto holes = MakeVolume(48, 40, 36, [](int i, int j, int k) {
+      const int v = (i * 7 + j * 3 + k * 5) % 23;
+      return v < 3 ? 0.0f : (v > 20 ? 1.0f : 0.02f * static_cast<float>(v));
+    });
+    auto threaded = Sample(holes, [](vtkErrorDiffusionSampler* s) { s->SetUseWorkerThread(true); });
+    auto single = Sample(holes, [](vtkErrorDiffusionSampler* s) { s->SetUseWorkerThread(false); });
+    bool sameArrays = threaded->GetPointData()->GetNumberOfArrays() ==
+      single->GetPointData()->GetNumberOfArrays();
+    for (int a = 0; sameArrays && a < threaded->GetPointData()->GetNumberOfArrays(); ++a)
+    {
+      vtkDataArray* x = threaded->GetPointData()->GetArray(a);
+      vtkDataArray* y = single->GetPointData()->GetArray(x->GetName());
+      sameArrays = y && x->GetNumberOfValues() == y->GetNumberOfValues() &&
+        x->GetDataTypeSize() == y->GetDataTypeSize() &&
+        std::memcmp(x->GetVoidPointer(0), y->GetVoidPointer(0),
+          static_cast<size_t>(x->GetNumberOfValues()) * x->GetDataTypeSize()) == 0;
+    }
+    Check(threaded->GetNumberOfPoints() > 1000 && SamePoints(threaded, single) && sameArrays &&
+        threaded->GetNumberOfVerts() == threaded->GetNumberOfPoints(),
+      "worker thread and single thread give the same output (" + Str(threaded->GetNumberOfPoints()) +
+        " and " + Str(single->GetNumberOfPoints()) + " points)");
+  }
 
   // Re-executing the same filter after a seed change follows the seed.
   vtkNew<vtkErrorDiffusionSampler> sampler;

@@ -1,5 +1,6 @@
 // Progress is reported layer by layer, from 0 to 1, and an abort requested from
-// a progress observer stops the sampling with an empty output.
+// a progress observer stops the sampling with an empty output; with the scan
+// on a worker thread (the default) and without it.
 #include "SamplerTestUtilities.h"
 #include "vtkCommand.h"
 #include "vtkVersionMacros.h"
@@ -37,12 +38,16 @@ public:
 int main()
 {
   auto image = MakeConstantVolume(64, 0.1f);
+  for (const bool threaded : { true, false })
+  {
+  const std::string mode = threaded ? " (worker thread)" : " (one thread)";
   {
     vtkNew<vtkErrorDiffusionSampler> sampler;
     vtkNew<ProgressObserver> progress;
     sampler->AddObserver(vtkCommand::ProgressEvent, progress);
     sampler->SetInputData(image);
     sampler->SetDensityMappingToIdentity();
+    sampler->SetUseWorkerThread(threaded);
     sampler->Update();
     const auto& v = progress->Values;
     bool increasing = true;
@@ -50,10 +55,10 @@ int main()
     {
       increasing = increasing && v[i] >= v[i - 1];
     }
-    Check(v.size() >= 32, "progress reported per layer: " + Str(v.size()) + " events");
+    Check(v.size() >= 32, "progress reported per layer: " + Str(v.size()) + " events" + mode);
     Check(increasing && !v.empty() && v.front() == 0.0 && v.back() == 1.0,
-      "progress goes from 0 to 1");
-    Check(sampler->GetOutput()->GetNumberOfPoints() > 0, "samples without abort");
+      "progress goes from 0 to 1" + mode);
+    Check(sampler->GetOutput()->GetNumberOfPoints() > 0, "samples without abort" + mode);
   }
   {
     vtkNew<vtkErrorDiffusionSampler> sampler;
@@ -62,6 +67,7 @@ int main()
     sampler->AddObserver(vtkCommand::ProgressEvent, progress);
     sampler->SetInputData(image);
     sampler->SetDensityMappingToIdentity();
+    sampler->SetUseWorkerThread(threaded);
     sampler->Update();
     // The executive may still report 1.0 when the request ends; the filter's
     // own layer-by-layer reports must stop right after the abort.
@@ -71,8 +77,9 @@ int main()
       lastLayer = p < 1.0 ? std::max(lastLayer, p) : lastLayer;
     }
     Check(lastLayer >= 0.3 && lastLayer < 0.35,
-      "sampling stops right after the abort (last layer progress " + Str(lastLayer) + ")");
-    Check(sampler->GetOutput()->GetNumberOfPoints() == 0, "aborted run has an empty output");
+      "sampling stops right after the abort (last layer progress " + Str(lastLayer) + ")" + mode);
+    Check(sampler->GetOutput()->GetNumberOfPoints() == 0, "aborted run has an empty output" + mode);
+  }
   }
   return Summary("TestErrorDiffusionSamplerProgress");
 }

@@ -244,6 +244,7 @@ defaults = {
     "Component": 0, "DensityMapping": 1, "ScalarRange": (0.0, 1.0), "UseCustomScalarRange": False,
     "DensityScale": 1.0, "ParameterSet": 0, "ParameterFile": "", "ModulationScale": 0.5, "Seed": 0,
     "BoundaryMode": 1, "WarmUpLayers": 8, "GenerateMask": False, "OutputPointsPrecision": 0,
+    "UseWorkerThread": True,
 }
 for name, value in defaults.items():
     got = getattr(s, "Get" + name)()
@@ -253,6 +254,7 @@ values = {
     "Component": -1, "DensityMapping": 2, "ScalarRange": (-3.5, 12.25), "UseCustomScalarRange": True,
     "DensityScale": 0.375, "ParameterSet": 2, "ParameterFile": "/tmp/some table.txt", "ModulationScale": 1.25,
     "Seed": 12345, "BoundaryMode": 0, "WarmUpLayers": 100, "GenerateMask": True, "OutputPointsPrecision": 1,
+    "UseWorkerThread": False,
 }
 for name, value in values.items():
     getattr(s, "Set" + name)(value)

@@ -1,0 +1,99 @@
+/**
+ * @class   vtkErrorDiffusionLayerRunner
+ * @brief   Runs a vtkErrorDiffusionKernel over the layers of a volume and hands
+ *          each finished layer to a consumer, optionally on two threads.
+ *
+ * The error-diffusion scan is sequential, but what is done with its result
+ * (turning the samples of a layer into points and attributes) is not: with
+ * SetThreaded(true) the scan runs on a worker thread and the layers go, in
+ * order, to the consumer on the calling thread, so both overlap. The calling
+ * thread is the one that consumes, so a consumer may report progress and
+ * check for abort the way a VTK filter must (from the thread that called it).
+ *
+ * Per layer k (0-based in the run) the runner asks Fill(k, density) for the
+ * densities, keeping one layer ahead because the kernel needs the next
+ * layer's densities, lets the kernel sample layer k into the layer's mask
+ * (a buffer of the runner's own, or the one MaskStorage(k) returns), then
+ * calls Consume with the layer's densities, mask and count. The buffers of a
+ * layer stay valid until Consume returns. After the last layer Finish(total)
+ * runs on the scan thread (it may start before the consumer has caught up),
+ * a place for work that only needs the number of samples.
+ *
+ * The result does not depend on threading: the kernel sees the same layers in
+ * the same order either way. Memory: four layers of densities and masks when
+ * threaded, two when not.
+ *
+ * Fill, MaskStorage and Finish run on the scan thread; they must not touch
+ * what Consume touches. An exception thrown by any callback stops the run;
+ * Run then returns false and GetError() says what was thrown.
+ */
+#ifndef vtkErrorDiffusionLayerRunner_h
+#define vtkErrorDiffusionLayerRunner_h
+
+#include "vtkFiltersBlueNoiseModule.h" // for export macro
+#include "vtkType.h"                   // for vtkIdType
+
+#include <functional>
+#include <string>
+#include <vector>
+
+class vtkErrorDiffusionKernel;
+
+class VTKFILTERSBLUENOISE_EXPORT vtkErrorDiffusionLayerRunner
+{
+public:
+  /// One sampled layer, as the consumer sees it.
+  struct Layer
+  {
+    int Index = 0;                       ///< 0-based layer of the run
+    const float* Density = nullptr;      ///< nx * ny densities, x fastest
+    const unsigned char* Mask = nullptr; ///< nx * ny flags, 1 for a sample
+    vtkIdType Count = 0;                 ///< samples in the layer
+  };
+
+  using FillFunction = std::function<void(int layer, float* density)>;
+  using MaskFunction = std::function<unsigned char*(int layer)>;
+  using ConsumeFunction = std::function<bool(const Layer& layer)>; ///< false stops the run
+  using FinishFunction = std::function<void(vtkIdType samples)>;
+
+  void SetFill(FillFunction f) { this->Fill = std::move(f); }
+  void SetMaskStorage(MaskFunction f) { this->MaskStorage = std::move(f); }
+  void SetConsume(ConsumeFunction f) { this->Consume = std::move(f); }
+  void SetFinish(FinishFunction f) { this->Finish = std::move(f); }
+  void SetThreaded(bool threaded) { this->Threaded = threaded; }
+  bool GetThreaded() const { return this->Threaded; }
+
+  /**
+   * Samples nz layers of nx * ny voxels with a kernel on which Begin() was
+   * called for that shape. Fill and Consume are required. Returns true when
+   * every layer was consumed and Finish ran; false when Consume stopped the
+   * run or a callback threw (see GetError()).
+   */
+  bool Run(vtkErrorDiffusionKernel& kernel, int nx, int ny, int nz);
+
+  /// Why the last Run failed; empty when it did not, or when Consume stopped it.
+  const std::string& GetError() const { return this->Error; }
+
+private:
+  bool RunSequential(vtkErrorDiffusionKernel& kernel, int nz);
+  bool RunThreaded(vtkErrorDiffusionKernel& kernel, int nz);
+  vtkIdType ScanLayer(vtkErrorDiffusionKernel& kernel, int k, int nz);
+  float* DensitySlot(int k);
+  unsigned char* MaskSlot(int k);
+
+  FillFunction Fill;
+  MaskFunction MaskStorage;
+  ConsumeFunction Consume;
+  FinishFunction Finish;
+  bool Threaded = false;
+  std::string Error;
+
+  // The ring of layer buffers of one Run.
+  int Slots = 2;
+  size_t LayerSize = 0;
+  float* Densities = nullptr;
+  unsigned char* Masks = nullptr;
+  std::vector<unsigned char*> LayerMasks; // the mask of the layer in each slot
+};
+
+#endif

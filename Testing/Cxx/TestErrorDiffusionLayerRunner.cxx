@@ -1,0 +1,175 @@
+// vtkErrorDiffusionLayerRunner: on one thread or two, the layers reach the
+// consumer in order with the masks a plain ProcessLayer loop gives; a consumer
+// that says stop, or a callback that throws, ends the run cleanly; Finish gets
+// the total; MaskStorage receives the masks.
+#include "BlueNoiseTestUtilities.h"
+#include "vtkErrorDiffusionKernel.h"
+#include "vtkErrorDiffusionLayerRunner.h"
+
+#include <stdexcept>
+#include <vector>
+
+using namespace bluenoise_test;
+
+namespace
+{
+const int NX = 37, NY = 23, NZ = 41;
+const size_t LayerSize = static_cast<size_t>(NX) * NY;
+
+// Densities with empty and full voxels, different in every layer.
+float Density(int x, int y, int z)
+{
+  const int v = (x * 7 + y * 11 + z * 5) % 29;
+  return v < 3 ? 0.0f : (v > 26 ? 1.0f : 0.03f * static_cast<float>(v));
+}
+
+void FillLayer(int z, float* out)
+{
+  for (int y = 0; y < NY; ++y)
+  {
+    for (int x = 0; x < NX; ++x)
+    {
+      out[x + NX * y] = Density(x, y, z);
+    }
+  }
+}
+
+vtkErrorDiffusionKernel MakeKernel()
+{
+  vtkErrorDiffusionKernel kernel;
+  kernel.SetSeed(5);
+  kernel.Begin(NX, NY, NZ);
+  return kernel;
+}
+
+// The reference: ProcessLayer called directly, layer after layer.
+std::vector<unsigned char> Reference()
+{
+  auto kernel = MakeKernel();
+  std::vector<unsigned char> mask(LayerSize * NZ);
+  std::vector<float> current(LayerSize), next(LayerSize);
+  FillLayer(0, current.data());
+  for (int z = 0; z < NZ; ++z)
+  {
+    if (z + 1 < NZ)
+    {
+      FillLayer(z + 1, next.data());
+    }
+    kernel.ProcessLayer(current.data(), z + 1 < NZ ? next.data() : nullptr, mask.data() + z * LayerSize);
+    current.swap(next);
+  }
+  return mask;
+}
+
+struct Outcome
+{
+  bool Done = false;
+  std::string Error;
+  std::vector<unsigned char> Mask;
+  std::vector<int> Order;
+  vtkIdType Counted = 0;
+  vtkIdType Finished = -1;
+  bool DensitiesRight = true;
+};
+
+Outcome RunWith(bool threaded, int stopAt = -1, int throwInFill = -1, int throwInConsume = -1,
+  bool external = false)
+{
+  Outcome o;
+  o.Mask.assign(LayerSize * NZ, 0);
+  auto kernel = MakeKernel();
+  vtkErrorDiffusionLayerRunner runner;
+  runner.SetThreaded(threaded);
+  runner.SetFill([&](int z, float* out) {
+    if (z == throwInFill)
+    {
+      throw std::runtime_error("fill failed");
+    }
+    FillLayer(z, out);
+  });
+  if (external)
+  {
+    runner.SetMaskStorage([&](int z) { return o.Mask.data() + z * LayerSize; });
+  }
+  runner.SetConsume([&](const vtkErrorDiffusionLayerRunner::Layer& layer) {
+    if (layer.Index == throwInConsume)
+    {
+      throw std::runtime_error("consume failed");
+    }
+    o.Order.push_back(layer.Index);
+    vtkIdType ones = 0;
+    for (size_t i = 0; i < LayerSize; ++i)
+    {
+      ones += layer.Mask[i];
+      o.DensitiesRight = o.DensitiesRight &&
+        layer.Density[i] == Density(static_cast<int>(i % NX), static_cast<int>(i / NX), layer.Index);
+    }
+    o.Counted += ones;
+    o.DensitiesRight = o.DensitiesRight && ones == layer.Count;
+    if (!external)
+    {
+      std::copy(layer.Mask, layer.Mask + LayerSize, o.Mask.data() + layer.Index * LayerSize);
+    }
+    return layer.Index != stopAt;
+  });
+  runner.SetFinish([&](vtkIdType total) { o.Finished = total; });
+  o.Done = runner.Run(kernel, NX, NY, NZ);
+  o.Error = runner.GetError();
+  return o;
+}
+}
+
+int main()
+{
+  const auto reference = Reference();
+  vtkIdType ones = 0;
+  for (unsigned char b : reference)
+  {
+    ones += b;
+  }
+  Check(ones > 1000, "the reference has samples: " + Str(ones));
+
+  for (const bool threaded : { false, true })
+  {
+    const std::string mode = threaded ? " (two threads)" : " (one thread)";
+    for (const bool external : { false, true })
+    {
+      const Outcome o = RunWith(threaded, -1, -1, -1, external);
+      bool inOrder = static_cast<int>(o.Order.size()) == NZ;
+      for (int z = 0; inOrder && z < NZ; ++z)
+      {
+        inOrder = o.Order[z] == z;
+      }
+      Check(o.Done && o.Error.empty(), "complete run" + mode);
+      Check(inOrder, "every layer once, in order" + mode);
+      Check(o.Mask == reference,
+        std::string(external ? "masks in MaskStorage" : "masks") + " equal the plain loop's" + mode);
+      Check(o.DensitiesRight, "each layer comes with its densities and count" + mode);
+      Check(o.Finished == ones && o.Counted == ones,
+        "Finish gets the total: " + Str(o.Finished) + " of " + Str(ones) + mode);
+    }
+    {
+      const Outcome o = RunWith(threaded, 6);
+      Check(!o.Done && o.Error.empty() && o.Order.size() == 7 && o.Finished < 0,
+        "a consumer that says stop at layer 6 ends the run after 7 layers, without Finish" + mode);
+    }
+    {
+      const Outcome o = RunWith(threaded, -1, 9);
+      Check(!o.Done && o.Error == "fill failed" && o.Order.size() <= 9,
+        "an exception in Fill ends the run and is reported ('" + o.Error + "', " +
+          Str(o.Order.size()) + " layers consumed)" + mode);
+    }
+    {
+      const Outcome o = RunWith(threaded, -1, -1, 4);
+      Check(!o.Done && o.Error == "consume failed" && o.Order.size() == 4,
+        "an exception in Consume ends the run and is reported ('" + o.Error + "')" + mode);
+    }
+  }
+  {
+    vtkErrorDiffusionLayerRunner runner;
+    auto kernel = MakeKernel();
+    Check(!runner.Run(kernel, NX, NY, NZ) && !runner.GetError().empty(),
+      "a runner without Fill and Consume says so");
+  }
+  return Summary("TestErrorDiffusionLayerRunner");
+}
