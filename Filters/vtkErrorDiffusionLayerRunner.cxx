@@ -11,8 +11,22 @@
 #include <thread>
 #include <vector>
 
+#if defined(__x86_64__) || defined(__i386__) || defined(_M_X64) || defined(_M_IX86)
+#include <immintrin.h> // _mm_pause
+#endif
+
 namespace
 {
+// A spin-wait hint: leaves the core's resources to the other thread.
+inline void CpuRelax()
+{
+#if defined(__x86_64__) || defined(__i386__) || defined(_M_X64) || defined(_M_IX86)
+  _mm_pause();
+#else
+  std::this_thread::yield();
+#endif
+}
+
 std::string Describe(const std::exception_ptr& error)
 {
   try
@@ -179,7 +193,7 @@ public:
         this->Sleeping.store(false);
         break;
       }
-      std::this_thread::yield();
+      CpuRelax();
     }
     return !stop.load();
   }

@@ -1,6 +1,7 @@
 #include "vtkErrorDiffusionPointAssembler.h"
 
 #include "vtkArrayDispatch.h"
+#include "vtkCellArray.h"
 #include "vtkDataArrayRange.h"
 #include "vtkDoubleArray.h"
 #include "vtkFloatArray.h"
@@ -8,9 +9,18 @@
 #include "vtkMatrix3x3.h"
 #include "vtkPointData.h"
 #include "vtkPoints.h"
+#include "vtkTypeInt32Array.h"
+#include "vtkTypeInt64Array.h"
 
 #include <algorithm>
+#include <cstdlib>
 #include <cstring>
+#include <new>
+#include <numeric>
+
+#if defined(__linux__)
+#include <sys/mman.h> // madvise
+#endif
 
 namespace
 {
@@ -44,6 +54,50 @@ struct GatherWorker
     }
   }
 };
+
+// Room for up to `tuples` tuples, uninitialised (the array's count means
+// nothing until EnsureTuples sets it). Large numeric arrays get memory aligned
+// to 2 MB and advised for transparent huge pages (Linux): one page fault per
+// 2 MB instead of one per 4 kB. The room is a hint: where the address space
+// for all of it cannot be had, a quarter of it is tried, and so on, and
+// EnsureTuples grows the array later.
+void ReserveUninitialised(vtkAbstractArray* array, vtkIdType tuples)
+{
+  const int components = std::max(1, array->GetNumberOfComponents());
+  const int valueSize = array->GetDataTypeSize();
+  for (; tuples > 0; tuples /= 4)
+  {
+    const size_t bytes = static_cast<size_t>(tuples) * components * valueSize;
+#if defined(__linux__) && defined(MADV_HUGEPAGE)
+    constexpr size_t huge = size_t(2) << 20;
+    if (bytes >= 4 * huge && valueSize > 0 && array->HasStandardMemoryLayout() &&
+      vtkDataArray::SafeDownCast(array))
+    {
+      const size_t rounded = (bytes + huge - 1) / huge * huge;
+      void* memory = nullptr;
+      if (posix_memalign(&memory, huge, rounded) != 0)
+      {
+        continue;
+      }
+      madvise(memory, rounded, MADV_HUGEPAGE); // a hint: failure is harmless
+      array->SetVoidArray(memory, static_cast<vtkIdType>(rounded / valueSize), /*save=*/0,
+        vtkAbstractArray::VTK_DATA_ARRAY_FREE);
+      return;
+    }
+#endif
+    try
+    {
+      if (array->Resize(tuples))
+      {
+        return;
+      }
+    }
+    catch (const std::bad_alloc&)
+    {
+      // VTK throws when the allocation fails; try less.
+    }
+  }
+}
 
 // Makes room for `tuples` tuples and sets the count; grows by at least half
 // (VTK's Resize of a numeric array more than doubles), so appending layers
@@ -157,17 +211,17 @@ void vtkErrorDiffusionPointAssembler::Begin(
   const vtkIdType ny = this->Extent[3] - this->Extent[2] + 1;
   const vtkIdType nz = this->Extent[5] - this->Extent[4] + 1;
 
-  // Room for up to 2^22 points (or one per voxel) at once: memory is only
-  // committed where it is written, so an untouched tail costs address space,
-  // not memory, and End() gives it back. Growing from a small array instead
-  // would copy the points several times and fault in every copy (a third of
-  // the time of a 128^3 volume at g = 0.5).
-  const vtkIdType reserve = std::min<vtkIdType>(nx * ny * nz, vtkIdType(1) << 22);
-  this->Coordinates->Resize(reserve);
-  this->Densities->Resize(reserve);
+  // Room for one point per voxel (up to 2^28) at once: memory is committed
+  // only where it is written, so the untouched tail costs address space, not
+  // memory, and End() gives it back. Growing from a small array instead would
+  // copy the points and fault in every copy (a third of the filter's time on a
+  // 128^3 volume at g = 0.5).
+  const vtkIdType reserve = std::min<vtkIdType>(nx * ny * nz, vtkIdType(1) << 28);
+  ReserveUninitialised(this->Coordinates, reserve);
+  ReserveUninitialised(this->Densities, reserve);
   for (vtkAbstractArray* target : this->Targets)
   {
-    target->Resize(reserve);
+    ReserveUninitialised(target, reserve);
   }
   this->LayerIds.resize(static_cast<size_t>(std::max<vtkIdType>(nx * ny, 0)) + 1);
   this->RowEnds.resize(static_cast<size_t>(std::max<vtkIdType>(ny, 0)));
@@ -273,4 +327,29 @@ vtkSmartPointer<vtkPoints> vtkErrorDiffusionPointAssembler::End()
   this->Targets.clear();
   this->OutputPointData = nullptr;
   return points;
+}
+
+//------------------------------------------------------------------------------
+vtkSmartPointer<vtkCellArray> vtkErrorDiffusionPointAssembler::MakeVertices(vtkIdType n)
+{
+  auto verts = vtkSmartPointer<vtkCellArray>::New();
+  auto fill = [n, &verts](auto offsets, auto connectivity) {
+    using ValueT = typename std::remove_reference<decltype(*offsets->GetPointer(0))>::type;
+    ReserveUninitialised(offsets, n + 1);
+    ReserveUninitialised(connectivity, n);
+    offsets->SetNumberOfValues(n + 1);
+    connectivity->SetNumberOfValues(n);
+    std::iota(offsets->GetPointer(0), offsets->GetPointer(0) + n + 1, ValueT(0));
+    std::iota(connectivity->GetPointer(0), connectivity->GetPointer(0) + n, ValueT(0));
+    verts->SetData(offsets, connectivity);
+  };
+  if (n < VTK_TYPE_INT32_MAX)
+  {
+    fill(vtkSmartPointer<vtkTypeInt32Array>::New(), vtkSmartPointer<vtkTypeInt32Array>::New());
+  }
+  else
+  {
+    fill(vtkSmartPointer<vtkTypeInt64Array>::New(), vtkSmartPointer<vtkTypeInt64Array>::New());
+  }
+  return verts;
 }

@@ -7,9 +7,13 @@
  * voxel centre in world coordinates (the image's origin, spacing and
  * direction matrix), the density the sample was drawn with (float array
  * `Density`) and the tuple of every point-data array of the image (numeric
- * arrays through vtkArrayDispatch, others tuple by tuple). The arrays grow as
- * layers come in (VTK's Resize, amortised, and a reallocation of large arrays
- * usually moves no data) and are trimmed to size by End().
+ * arrays through vtkArrayDispatch, others tuple by tuple). The arrays reserve
+ * room for up to 2^22 points up front, grow beyond that (VTK's Resize,
+ * amortised) and are trimmed to size by End(). Large arrays with the standard
+ * memory layout are allocated 2 MB aligned and, on Linux, advised for
+ * transparent huge pages: the output is written once, in order, and most of
+ * the cost of fresh memory is the page faults (a quarter of the filter's time
+ * with 4 kB pages at g = 0.5).
  *
  * Layers must come in z order, each once. The image and its arrays are only
  * read, so another thread may read them at the same time (the sampler scans
@@ -25,6 +29,7 @@
 #include <vector>
 
 class vtkAbstractArray;
+class vtkCellArray;
 class vtkDataArray;
 class vtkFloatArray;
 class vtkImageData;
@@ -61,6 +66,12 @@ public:
    * data given to Begin() and returns the points.
    */
   vtkSmartPointer<vtkPoints> End();
+
+  /**
+   * One vertex cell per point, for n points (32-bit storage when it fits,
+   * to halve the memory). Does not depend on a Begin() or End().
+   */
+  static vtkSmartPointer<vtkCellArray> MakeVertices(vtkIdType n);
 
 private:
   void Reserve(vtkIdType tuples);

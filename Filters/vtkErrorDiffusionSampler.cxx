@@ -20,8 +20,6 @@
 #include "vtkPointData.h"
 #include "vtkPoints.h"
 #include "vtkPolyData.h"
-#include "vtkTypeInt32Array.h"
-#include "vtkTypeInt64Array.h"
 #include "vtkStreamingDemandDrivenPipeline.h"
 #include "vtkUnsignedCharArray.h"
 #include "vtkVersionMacros.h"
@@ -113,29 +111,6 @@ void FillLayerDensity(vtkDataArray* array, vtkIdType begin, vtkIdType end, int c
   {
     worker(array, begin, end, component, map, out);
   }
-}
-
-// One vertex cell per point; 32-bit storage when it fits, to halve the memory.
-vtkSmartPointer<vtkCellArray> MakeVertices(vtkIdType n)
-{
-  auto verts = vtkSmartPointer<vtkCellArray>::New();
-  auto fill = [n, &verts](auto offsets, auto connectivity) {
-    using ValueT = typename std::remove_reference<decltype(*offsets->GetPointer(0))>::type;
-    offsets->SetNumberOfValues(n + 1);
-    connectivity->SetNumberOfValues(n);
-    std::iota(offsets->GetPointer(0), offsets->GetPointer(0) + n + 1, ValueT(0));
-    std::iota(connectivity->GetPointer(0), connectivity->GetPointer(0) + n, ValueT(0));
-    verts->SetData(offsets, connectivity);
-  };
-  if (n < VTK_TYPE_INT32_MAX)
-  {
-    fill(vtkSmartPointer<vtkTypeInt32Array>::New(), vtkSmartPointer<vtkTypeInt32Array>::New());
-  }
-  else
-  {
-    fill(vtkSmartPointer<vtkTypeInt64Array>::New(), vtkSmartPointer<vtkTypeInt64Array>::New());
-  }
-  return verts;
 }
 
 void AddFieldArray(vtkFieldData* fd, vtkDataArray* array, const char* name, int components)
@@ -422,7 +397,9 @@ int vtkErrorDiffusionSampler::RequestData(
   });
   // The vertex cells need only the count: the scan thread makes them while
   // the points are being finished.
-  runner.SetFinish([&](vtkIdType samples) { vertices = MakeVertices(samples); });
+  runner.SetFinish([&](vtkIdType samples) {
+    vertices = vtkErrorDiffusionPointAssembler::MakeVertices(samples);
+  });
 
   this->UpdateProgress(0.0);
   if (!runner.Run(kernel, nx, ny, nz))
