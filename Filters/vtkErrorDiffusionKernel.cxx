@@ -1,6 +1,7 @@
 #include "vtkErrorDiffusionKernel.h"
 
 #include <algorithm>
+#include <cstring>
 #include <map>
 #include <mutex>
 #include <sstream>
@@ -106,6 +107,7 @@ void vtkErrorDiffusionKernel::Begin(int nx, int ny, int nz, int firstLayer)
   this->FirstLayer = firstLayer;
   this->LayersDone = 0;
   this->TestedLayer = nullptr;
+  this->ParameterCache.fill(LevelParameters()); // the table or the scale may have changed
   const size_t layer = static_cast<size_t>(this->NX) * static_cast<size_t>(this->NY);
   this->Current.assign(layer, 0.0f);
   this->Next.assign(layer, 0.0f);
@@ -309,6 +311,29 @@ bool AllActive(const float* g, size_t n)
 }
 
 //------------------------------------------------------------------------------
+// Real volumes change g from voxel to voxel but hold few distinct values (an
+// 8-bit MRI has at most 256): a small direct-mapped cache keyed by the bits
+// of g spares most table interpolations, which cost several times the rest
+// of a voxel's work.
+const vtkErrorDiffusionKernel::LevelParameters& vtkErrorDiffusionKernel::ParametersOf(
+  float g, float scale)
+{
+  std::uint32_t bits = 0;
+  std::memcpy(&bits, &g, sizeof(bits));
+  LevelParameters& entry = this->ParameterCache[(bits * 2654435761u) >> 24];
+  if (entry.G != g)
+  {
+    const auto params = this->Table.Evaluate(g);
+    std::copy(params.Weights.begin(), params.Weights.end(), entry.Weights);
+    const float charge = this->ChargeAt(g);
+    entry.Base = g <= 0.5f ? 0.5f - charge : 0.5f + charge;
+    entry.Modulation = (g <= 0.5f ? scale : -scale) * params.Modulation;
+    entry.G = g;
+  }
+  return entry;
+}
+
+//------------------------------------------------------------------------------
 // The scan of one layer. Record keeps what each voxel received (for
 // GetSteadyStateCharges) and costs a store per voxel, so it is a template
 // flag. Rows away from the faces of a layer whose voxels and successors are
@@ -379,11 +404,10 @@ vtkIdType vtkErrorDiffusionKernel::ScanRows(
       }
       if (g != cachedG)
       {
-        const auto params = this->Table.Evaluate(g);
-        std::copy(params.Weights.begin(), params.Weights.end(), w);
-        const float charge = this->ChargeAt(g);
-        base = g <= 0.5f ? 0.5f - charge : 0.5f + charge;
-        modulation = (g <= 0.5f ? scale : -scale) * params.Modulation;
+        const LevelParameters& p = this->ParametersOf(g, scale);
+        std::copy(p.Weights, p.Weights + 6, w);
+        base = p.Base;
+        modulation = p.Modulation;
         cachedG = g;
       }
       const float value = (g + cur[idx]) + carry; // g + cur[idx] is off the critical path

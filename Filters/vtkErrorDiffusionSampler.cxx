@@ -26,6 +26,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <numeric>
 #include <thread>
 #include <type_traits>
@@ -110,6 +111,82 @@ void FillLayerDensity(vtkDataArray* array, vtkIdType begin, vtkIdType end, int c
   if (!vtkArrayDispatch::Dispatch::Execute(array, worker, begin, end, component, map, out))
   {
     worker(array, begin, end, component, map, out);
+  }
+}
+
+// The finite range of a component (or, for -1, of the tuple magnitude):
+// VTK's GetFiniteRange is not cached across executions and walks the values
+// through a generic path, a third of the filter's time on an 8-bit MRI.
+// lo > hi when no value is finite.
+struct FiniteRangeWorker
+{
+  template <typename ArrayT>
+  void operator()(ArrayT* array, int component, double& lo, double& hi) const
+  {
+    using T = vtk::GetAPIType<ArrayT>;
+    const int nc = array->GetNumberOfComponents();
+    T low = std::numeric_limits<T>::max();
+    T high = std::numeric_limits<T>::lowest();
+    bool any = false;
+    if (component >= 0 && nc == 1)
+    {
+      for (const T v : vtk::DataArrayValueRange<1>(array))
+      {
+        if (std::is_floating_point<T>::value && !std::isfinite(static_cast<double>(v)))
+        {
+          continue;
+        }
+        low = v < low ? v : low;
+        high = v > high ? v : high;
+        any = true;
+      }
+    }
+    else if (component >= 0)
+    {
+      for (const auto tuple : vtk::DataArrayTupleRange(array))
+      {
+        const T v = tuple[component];
+        if (std::is_floating_point<T>::value && !std::isfinite(static_cast<double>(v)))
+        {
+          continue;
+        }
+        low = v < low ? v : low;
+        high = v > high ? v : high;
+        any = true;
+      }
+    }
+    else
+    {
+      double mlo = std::numeric_limits<double>::infinity(), mhi = -mlo;
+      for (const auto tuple : vtk::DataArrayTupleRange(array))
+      {
+        double sum = 0.0;
+        for (const auto c : tuple)
+        {
+          sum += static_cast<double>(c) * static_cast<double>(c);
+        }
+        const double m = std::sqrt(sum);
+        if (std::isfinite(m))
+        {
+          mlo = std::min(mlo, m);
+          mhi = std::max(mhi, m);
+        }
+      }
+      lo = mlo;
+      hi = mhi;
+      return;
+    }
+    lo = any ? static_cast<double>(low) : std::numeric_limits<double>::infinity();
+    hi = any ? static_cast<double>(high) : -std::numeric_limits<double>::infinity();
+  }
+};
+
+void ComputeFiniteRange(vtkDataArray* array, int component, double range[2])
+{
+  FiniteRangeWorker worker;
+  if (!vtkArrayDispatch::Dispatch::Execute(array, worker, component, range[0], range[1]))
+  {
+    worker(array, component, range[0], range[1]);
   }
 }
 
@@ -299,7 +376,7 @@ int vtkErrorDiffusionSampler::RequestData(
     double range[2] = { this->ScalarRange[0], this->ScalarRange[1] };
     if (!this->UseCustomScalarRange)
     {
-      array->GetFiniteRange(range, this->Component);
+      ComputeFiniteRange(array, this->Component, range);
     }
     if (!std::isfinite(range[0]) || !std::isfinite(range[1]) || range[0] > range[1])
     {
