@@ -44,9 +44,12 @@
  * of the array the filter is given, so pieces map densities alike only with
  * DENSITY_IDENTITY, a transfer function, or UseCustomScalarRange. Time is
  * O(voxels); extra memory besides the output is a few layers (two of error,
- * four of densities and masks). The scan runs on a worker thread while this
- * thread builds the points (UseWorkerThread). Progress is reported per layer;
- * abort is honoured between layers.
+ * four of densities and masks). The output arrays reserve address space for
+ * one point per voxel (up to 2^28) so they never grow by copying; only what
+ * is written is committed, and the rest is released at the end (see
+ * vtkErrorDiffusionPointAssembler). The scan runs on a worker thread while
+ * this thread builds the points (UseWorkerThread). Progress is reported per
+ * layer; abort is honoured between layers.
  *
  * Bad input (no array, non-numeric array, cell data, empty extent, component
  * out of range, negative or non-finite DensityScale or ModulationScale, a
