@@ -15,6 +15,8 @@
 #include "vtkInformationVector.h"
 #include "vtkIntArray.h"
 #include "vtkMatrix3x3.h"
+#include "vtkMultiProcessController.h"
+#include "vtkCommunicator.h"
 #include "vtkObjectFactory.h"
 #include "vtkPiecewiseFunction.h"
 #include "vtkPointData.h"
@@ -34,6 +36,7 @@
 
 vtkStandardNewMacro(vtkErrorDiffusionSampler);
 vtkCxxSetObjectMacro(vtkErrorDiffusionSampler, TransferFunction, vtkPiecewiseFunction);
+vtkCxxSetObjectMacro(vtkErrorDiffusionSampler, Controller, vtkMultiProcessController);
 
 namespace
 {
@@ -205,12 +208,14 @@ vtkErrorDiffusionSampler::vtkErrorDiffusionSampler()
   this->SetNumberOfOutputPorts(2);
   this->SetInputArrayToProcess(
     0, 0, 0, vtkDataObject::FIELD_ASSOCIATION_POINTS, vtkDataSetAttributes::SCALARS);
+  this->SetController(vtkMultiProcessController::GetGlobalController());
 }
 
 //------------------------------------------------------------------------------
 vtkErrorDiffusionSampler::~vtkErrorDiffusionSampler()
 {
   this->SetTransferFunction(nullptr);
+  this->SetController(nullptr);
 }
 
 //------------------------------------------------------------------------------
@@ -274,34 +279,9 @@ bool vtkErrorDiffusionSampler::IsAborted()
 }
 
 //------------------------------------------------------------------------------
-int vtkErrorDiffusionSampler::RequestData(
-  vtkInformation*, vtkInformationVector** inputVector, vtkInformationVector* outputVector)
+vtkDataArray* vtkErrorDiffusionSampler::GetDensityArray(
+  vtkImageData* input, vtkInformationVector** inputVector)
 {
-  vtkImageData* input = vtkImageData::GetData(inputVector[0], 0);
-  vtkPolyData* output = vtkPolyData::GetData(outputVector, 0);
-  vtkImageData* mask = vtkImageData::GetData(outputVector, 1);
-  output->Initialize();
-  mask->Initialize();
-  if (!input)
-  {
-    vtkErrorMacro("No input image.");
-    return 0;
-  }
-
-  // --- Validate everything before any work, so bad input costs nothing.
-  int extent[6];
-  input->GetExtent(extent);
-  const int nx = extent[1] - extent[0] + 1;
-  const int ny = extent[3] - extent[2] + 1;
-  const int nz = extent[5] - extent[4] + 1;
-  if (nx <= 0 || ny <= 0 || nz <= 0)
-  {
-    vtkErrorMacro("The input image has an empty extent [" << extent[0] << ", " << extent[1]
-                                                          << ", " << extent[2] << ", " << extent[3]
-                                                          << ", " << extent[4] << ", " << extent[5]
-                                                          << "]: nothing to sample.");
-    return 0;
-  }
   int association = -1;
   vtkAbstractArray* abstractArray =
     this->GetInputAbstractArrayToProcess(0, inputVector, association);
@@ -317,36 +297,57 @@ int vtkErrorDiffusionSampler::RequestData(
   {
     vtkErrorMacro("No density array: select a point-data array with SetInputArrayToProcess "
                   "(the input has no active scalars).");
-    return 0;
+    return nullptr;
   }
+  const char* name = abstractArray->GetName() ? abstractArray->GetName() : "";
   if (association != vtkDataObject::FIELD_ASSOCIATION_POINTS)
   {
-    vtkErrorMacro("The density array '" << (abstractArray->GetName() ? abstractArray->GetName() : "")
-                                        << "' is not point data: only point data is sampled.");
-    return 0;
+    vtkErrorMacro("The density array '" << name << "' is not point data: only point data is "
+                                        << "sampled.");
+    return nullptr;
   }
   vtkDataArray* array = vtkDataArray::SafeDownCast(abstractArray);
   if (!array)
   {
-    vtkErrorMacro("The density array '" << (abstractArray->GetName() ? abstractArray->GetName() : "")
-                                        << "' is not numeric (" << abstractArray->GetClassName()
-                                        << ").");
-    return 0;
+    vtkErrorMacro("The density array '" << name << "' is not numeric ("
+                                        << abstractArray->GetClassName() << ").");
+    return nullptr;
   }
-  const vtkIdType voxels = static_cast<vtkIdType>(nx) * ny * nz;
+  const vtkIdType voxels = input->GetNumberOfPoints();
   if (array->GetNumberOfTuples() != voxels)
   {
     vtkErrorMacro("The density array has " << array->GetNumberOfTuples() << " tuples for "
                                            << voxels << " voxels.");
-    return 0;
+    return nullptr;
   }
   if (this->Component >= array->GetNumberOfComponents())
   {
-    vtkErrorMacro("Component " << this->Component << " is out of range: the array '"
-                               << (array->GetName() ? array->GetName() : "") << "' has "
-                               << array->GetNumberOfComponents() << " component(s).");
+    vtkErrorMacro("Component " << this->Component << " is out of range: the array '" << name
+                               << "' has " << array->GetNumberOfComponents()
+                               << " component(s).");
+    return nullptr;
+  }
+  return array;
+}
+
+//------------------------------------------------------------------------------
+int vtkErrorDiffusionSampler::RequestData(
+  vtkInformation*, vtkInformationVector** inputVector, vtkInformationVector* outputVector)
+{
+  vtkImageData* input = vtkImageData::GetData(inputVector[0], 0);
+  vtkPolyData* output = vtkPolyData::GetData(outputVector, 0);
+  vtkImageData* mask = vtkImageData::GetData(outputVector, 1);
+  output->Initialize();
+  mask->Initialize();
+  if (!input)
+  {
+    vtkErrorMacro("No input image.");
     return 0;
   }
+
+  // --- Validate everything before any work, so bad input costs nothing. The
+  // properties first: every piece of a distributed run sees the same ones, so
+  // all pieces stop here or none does.
   if (!std::isfinite(this->DensityScale) || this->DensityScale < 0.0)
   {
     vtkErrorMacro("DensityScale must be finite and >= 0, not " << this->DensityScale << ".");
@@ -357,27 +358,81 @@ int vtkErrorDiffusionSampler::RequestData(
     vtkErrorMacro("ModulationScale must be finite and >= 0, not " << this->ModulationScale << ".");
     return 0;
   }
+  if (this->DensityMapping == DENSITY_TRANSFER_FUNCTION &&
+    (!this->TransferFunction || this->TransferFunction->GetSize() == 0))
+  {
+    vtkErrorMacro("DensityMapping is TransferFunction but no (or an empty) transfer function "
+                  "is set.");
+    return 0;
+  }
+
+  // One piece of several (pvbatch with MPI): the default scalar range is the
+  // range over all pieces, so that equal values get equal densities
+  // everywhere. Every piece takes part in that reduction, even one that has
+  // nothing to sample, before it gives up.
+  vtkInformation* outInfo = outputVector->GetInformationObject(0);
+  const int pieces =
+    outInfo->Has(vtkStreamingDemandDrivenPipeline::UPDATE_NUMBER_OF_PIECES())
+    ? outInfo->Get(vtkStreamingDemandDrivenPipeline::UPDATE_NUMBER_OF_PIECES())
+    : 1;
+  const bool distributed =
+    pieces > 1 && this->Controller && this->Controller->GetNumberOfProcesses() > 1;
+  const bool globalRange = distributed && this->DensityMapping == DENSITY_SCALAR_RANGE &&
+    !this->UseCustomScalarRange;
+
+  int extent[6];
+  input->GetExtent(extent);
+  const int nx = extent[1] - extent[0] + 1;
+  const int ny = extent[3] - extent[2] + 1;
+  const int nz = extent[5] - extent[4] + 1;
+  const bool emptyPiece = nx <= 0 || ny <= 0 || nz <= 0;
+  vtkDataArray* array = nullptr;
+  if (emptyPiece && !distributed)
+  {
+    vtkErrorMacro("The input image has an empty extent [" << extent[0] << ", " << extent[1]
+                                                          << ", " << extent[2] << ", " << extent[3]
+                                                          << ", " << extent[4] << ", " << extent[5]
+                                                          << "]: nothing to sample.");
+  }
+  else if (!emptyPiece)
+  {
+    array = this->GetDensityArray(input, inputVector);
+  }
+
+  double range[2] = { this->ScalarRange[0], this->ScalarRange[1] };
+  if (this->DensityMapping == DENSITY_SCALAR_RANGE && !this->UseCustomScalarRange)
+  {
+    range[0] = std::numeric_limits<double>::infinity();
+    range[1] = -range[0];
+    if (array)
+    {
+      ComputeFiniteRange(array, this->Component, range);
+    }
+    if (globalRange)
+    {
+      const double local[2] = { range[0], -range[1] };
+      double global[2] = { 0.0, 0.0 };
+      this->Controller->AllReduce(local, global, 2, vtkCommunicator::MIN_OP);
+      range[0] = global[0];
+      range[1] = -global[1];
+    }
+  }
+  if (!array)
+  {
+    // An empty piece of a distributed run is not an error: nothing to sample.
+    return emptyPiece && distributed ? 1 : 0;
+  }
+  const vtkIdType voxels = static_cast<vtkIdType>(nx) * ny * nz;
 
   DensityMap map;
   map.Mode = this->DensityMapping;
   map.Scale = this->DensityScale;
   if (this->DensityMapping == DENSITY_TRANSFER_FUNCTION)
   {
-    if (!this->TransferFunction || this->TransferFunction->GetSize() == 0)
-    {
-      vtkErrorMacro("DensityMapping is TransferFunction but no (or an empty) transfer function "
-                    "is set.");
-      return 0;
-    }
     map.Function = this->TransferFunction;
   }
   else if (this->DensityMapping == DENSITY_SCALAR_RANGE)
   {
-    double range[2] = { this->ScalarRange[0], this->ScalarRange[1] };
-    if (!this->UseCustomScalarRange)
-    {
-      ComputeFiniteRange(array, this->Component, range);
-    }
     if (!std::isfinite(range[0]) || !std::isfinite(range[1]) || range[0] > range[1])
     {
       vtkErrorMacro("Invalid scalar range [" << range[0] << ", " << range[1] << "].");
@@ -454,9 +509,50 @@ int vtkErrorDiffusionSampler::RequestData(
   vtkErrorDiffusionLayerRunner runner;
   runner.SetThreaded(this->UseWorkerThread && nz > 1 &&
     voxels >= MIN_VOXELS_FOR_WORKER_THREAD && std::thread::hardware_concurrency() > 1);
+  // Voxels that belong to another piece get density 0, so each voxel of the
+  // whole volume is sampled once: points the input flags as duplicate or
+  // hidden, and, for one piece of several, the upper faces shared with the
+  // next piece (structured pieces overlap by one plane of points).
+  vtkUnsignedCharArray* ghosts = input->GetPointGhostArray();
+  const unsigned char* ghostFlags = ghosts ? ghosts->GetPointer(0) : nullptr;
+  bool sharedFace[3] = { false, false, false };
+  vtkInformation* inInfo = inputVector[0]->GetInformationObject(0);
+  if (pieces > 1 && inInfo->Has(vtkStreamingDemandDrivenPipeline::WHOLE_EXTENT()))
+  {
+    int whole[6];
+    inInfo->Get(vtkStreamingDemandDrivenPipeline::WHOLE_EXTENT(), whole);
+    for (int a = 0; a < 3; ++a)
+    {
+      sharedFace[a] = extent[2 * a + 1] < whole[2 * a + 1];
+    }
+  }
   runner.SetFill([&](int k, float* density) {
     const vtkIdType first = k * layerSize;
     FillLayerDensity(array, first, first + layerSize, this->Component, map, density);
+    if (ghostFlags)
+    {
+      const unsigned char notOwned =
+        vtkDataSetAttributes::DUPLICATEPOINT | vtkDataSetAttributes::HIDDENPOINT;
+      for (vtkIdType i = 0; i < layerSize; ++i)
+      {
+        density[i] = (ghostFlags[first + i] & notOwned) ? 0.0f : density[i];
+      }
+    }
+    if (sharedFace[0])
+    {
+      for (int j = 0; j < ny; ++j)
+      {
+        density[static_cast<vtkIdType>(j) * nx + nx - 1] = 0.0f;
+      }
+    }
+    if (sharedFace[1])
+    {
+      std::fill(density + layerSize - nx, density + layerSize, 0.0f);
+    }
+    if (sharedFace[2] && k == nz - 1)
+    {
+      std::fill(density, density + layerSize, 0.0f);
+    }
   });
   if (maskArray)
   {
@@ -539,4 +635,5 @@ void vtkErrorDiffusionSampler::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "GenerateMask: " << this->GenerateMask << "\n";
   os << indent << "OutputPointsPrecision: " << this->OutputPointsPrecision << "\n";
   os << indent << "UseWorkerThread: " << this->UseWorkerThread << "\n";
+  os << indent << "Controller: " << this->Controller << "\n";
 }

@@ -40,9 +40,12 @@
  *
  * The filter samples whatever extent the pipeline hands it: under pvbatch with
  * MPI each rank samples its own piece (pieces do not exchange error, so piece
- * faces are treated like volume faces). The default scalar range is the range
- * of the array the filter is given, so pieces map densities alike only with
- * DENSITY_IDENTITY, a transfer function, or UseCustomScalarRange. Time is
+ * faces are treated like volume faces). Each voxel of the whole volume is
+ * sampled by one piece: the plane a piece shares with the next one
+ * (structured pieces overlap by one plane of points) is left to that one,
+ * and points flagged DUPLICATEPOINT or HIDDENPOINT in the input's ghost array
+ * are never sampled. The default scalar range is the range over all pieces
+ * (see SetController). Time is
  * O(voxels); extra memory besides the output is a few layers (two of error,
  * four of densities and masks). The output arrays reserve address space for
  * one point per voxel (up to 2^28) so they never grow by copying; only what
@@ -66,7 +69,9 @@
 
 #include <string>
 
+class vtkDataArray;
 class vtkImageData;
+class vtkMultiProcessController;
 class vtkPiecewiseFunction;
 
 class VTKFILTERSBLUENOISE_EXPORT vtkErrorDiffusionSampler : public vtkPolyDataAlgorithm
@@ -254,6 +259,19 @@ public:
   vtkBooleanMacro(UseWorkerThread, bool);
   ///@}
 
+  ///@{
+  /**
+   * The controller used when the filter samples one piece of several (under
+   * pvbatch or pvserver with MPI): with DENSITY_SCALAR_RANGE and no custom
+   * range, the range is reduced over all processes so that a value maps to
+   * the same density in every piece, and a piece with an empty extent gives
+   * an empty output without an error. Default: the global controller; set
+   * nullptr to map each piece by its own range.
+   */
+  virtual void SetController(vtkMultiProcessController*);
+  vtkGetObjectMacro(Controller, vtkMultiProcessController);
+  ///@}
+
   /// Output port 1: the mask image.
   vtkImageData* GetMaskOutput();
 
@@ -285,12 +303,15 @@ protected:
   bool GenerateMask = false;
   int OutputPointsPrecision = SINGLE_PRECISION;
   bool UseWorkerThread = true;
+  vtkMultiProcessController* Controller = nullptr;
 
 private:
   vtkErrorDiffusionSampler(const vtkErrorDiffusionSampler&) = delete;
   void operator=(const vtkErrorDiffusionSampler&) = delete;
 
   bool IsAborted();
+  // The selected point array if it can be sampled; nullptr after an error.
+  vtkDataArray* GetDensityArray(vtkImageData* input, vtkInformationVector** inputVector);
 };
 
 #endif

@@ -16,6 +16,8 @@ packages=(
   libtheora-dev libogg-dev libavcodec-dev libavformat-dev libswscale-dev libgdal-dev
   libopenmpi-dev libx11-dev libgl-dev python3-dev python3-mpi4py zlib1g-dev
   libprotobuf-dev libcgns-dev libpugixml-dev
+  # mpiexec for the two-process pvbatch test
+  openmpi-bin
   # FFTW3 for the spectrum; real MRI volumes for the main job and tests
   libfftw3-dev mricron-data
   # TBB: the headers of Debian's VTK 9.1 (third CI build) include it
