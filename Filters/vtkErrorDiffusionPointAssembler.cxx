@@ -214,8 +214,9 @@ void vtkErrorDiffusionPointAssembler::Begin(
   // Room for one point per voxel (up to 2^28) at once: memory is committed
   // only where it is written, so the untouched tail costs address space, not
   // memory, and End() gives it back. Growing from a small array instead would
-  // copy the points and fault in every copy (a third of the filter's time on a
-  // 128^3 volume at g = 0.5).
+  // copy the points and fault in every copy. With the huge pages below, this
+  // took the single-threaded filter on a 128^3 volume at g = 0.5 from 30 to
+  // 18 ms.
   const vtkIdType reserve = std::min<vtkIdType>(nx * ny * nz, vtkIdType(1) << 28);
   ReserveUninitialised(this->Coordinates, reserve);
   ReserveUninitialised(this->Densities, reserve);
