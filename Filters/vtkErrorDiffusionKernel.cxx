@@ -164,7 +164,7 @@ std::vector<float> vtkErrorDiffusionKernel::GetSteadyStateCharges(
     long count = 0;
     for (int layer = 0; layer < settle + measured; ++layer)
     {
-      probe.ScanRows<true>(density.data(), density.data(), mask.data(), layer);
+      probe.ScanLayer<true>(density.data(), density.data(), mask.data(), layer);
       if (layer >= settle)
       {
         for (int y = margin; y < n - margin; ++y)
@@ -315,8 +315,7 @@ bool AllActive(const float* g, size_t n)
 // 8-bit MRI has at most 256): a small direct-mapped cache keyed by the bits
 // of g spares most table interpolations, which cost several times the rest
 // of a voxel's work.
-const vtkErrorDiffusionKernel::LevelParameters& vtkErrorDiffusionKernel::ParametersOf(
-  float g, float scale)
+const vtkErrorDiffusionKernel::LevelParameters& vtkErrorDiffusionKernel::ParametersOf(float g)
 {
   std::uint32_t bits = 0;
   std::memcpy(&bits, &g, sizeof(bits));
@@ -327,6 +326,7 @@ const vtkErrorDiffusionKernel::LevelParameters& vtkErrorDiffusionKernel::Paramet
     std::copy(params.Weights.begin(), params.Weights.end(), entry.Weights);
     const float charge = this->ChargeAt(g);
     entry.Base = g <= 0.5f ? 0.5f - charge : 0.5f + charge;
+    const float scale = static_cast<float>(this->ModulationScale);
     entry.Modulation = (g <= 0.5f ? scale : -scale) * params.Modulation;
     entry.G = g;
   }
@@ -340,7 +340,7 @@ const vtkErrorDiffusionKernel::LevelParameters& vtkErrorDiffusionKernel::Paramet
 // all active take a path without any test on the targets: that is the bulk
 // of the work on any large support, and the tests cost a third of the time.
 template <bool Record>
-vtkIdType vtkErrorDiffusionKernel::ScanRows(
+vtkIdType vtkErrorDiffusionKernel::ScanLayer(
   const float* density, const float* next, unsigned char* mask, int layer)
 {
   const bool nextLayerExists = next != nullptr;
@@ -367,7 +367,6 @@ vtkIdType vtkErrorDiffusionKernel::ScanRows(
   const LayerScan s = GetLayerScan(this->NX, this->NY, layer);
   float* cur = this->Current.data();
   float* nxt = this->Next.data();
-  const float scale = static_cast<float>(this->ModulationScale);
   const vtkIdType V = s.VStride;
 
   float cachedG = -1.0f;
@@ -404,7 +403,7 @@ vtkIdType vtkErrorDiffusionKernel::ScanRows(
       }
       if (g != cachedG)
       {
-        const LevelParameters& p = this->ParametersOf(g, scale);
+        const LevelParameters& p = this->ParametersOf(g);
         std::copy(p.Weights, p.Weights + 6, w);
         base = p.Base;
         modulation = p.Modulation;
@@ -482,11 +481,4 @@ vtkIdType vtkErrorDiffusionKernel::ScanRows(
     }
   }
   return count;
-}
-
-//------------------------------------------------------------------------------
-vtkIdType vtkErrorDiffusionKernel::ScanLayer(
-  const float* density, const float* next, unsigned char* mask, int layer)
-{
-  return this->ScanRows<false>(density, next, mask, layer);
 }

@@ -58,11 +58,12 @@
  *   only translates the error by C: the settled process makes the same
  *   decisions, but an empty buffer is now its mean state, so no charging is
  *   needed, a rise of density along the scan is followed at once, and error
- *   leaving the volume has zero mean. WarmUpLayers
- *   virtual layers with the first layer's density then settle the buffers'
- *   fluctuations, and the error the last layer passes on leaves the volume.
- *   Lateral faces and the faces of the support renormalise as above. Whole-volume and interior mean
- *   anisotropy agree within 0.15 dB at every key level from 8/255 (128^3).
+ *   leaving the volume has zero mean. WarmUpLayers virtual layers with the
+ *   first layer's density then settle the buffers' fluctuations, and the
+ *   error the last layer passes on leaves the volume. Lateral faces and the
+ *   faces of the support renormalise as above. Whole-volume and interior
+ *   mean anisotropy agree within 0.15 dB at every key level from 8/255
+ *   (128^3).
  *   Caveat: a region that starts after empty voxels (importance sampling)
  *   has no warm-up; at g = 0.01 its first 8 layers hold 2.6% too few
  *   samples (64^2 layers, 4 seeds; within 0.7% from g = 8/255 up).
@@ -189,12 +190,12 @@ private:
     float Base = 0.5f;
     float Modulation = 0.0f;
   };
-  const LevelParameters& ParametersOf(float g, float scale);
+  const LevelParameters& ParametersOf(float g);
 
   // next: the densities of the following layer, nullptr if it takes no error.
+  // Record keeps in Current what each voxel received (GetSteadyStateCharges).
+  template <bool Record = false>
   vtkIdType ScanLayer(const float* density, const float* next, unsigned char* mask, int phase);
-  template <bool Record>
-  vtkIdType ScanRows(const float* density, const float* next, unsigned char* mask, int phase);
   float ChargeAt(float g) const;
   vtkIdType DrawLayerIndependently(const float* density, unsigned char* mask);
 

@@ -35,14 +35,6 @@ struct GatherWorker
     const auto in = vtk::DataArrayValueRange(src);
     auto out = vtk::DataArrayValueRange(dst);
     const int nc = src->GetNumberOfComponents();
-    if (nc == 1)
-    {
-      for (vtkIdType p = 0; p < n; ++p)
-      {
-        out[dstFirst + p] = in[srcFirst + ids[p]];
-      }
-      return;
-    }
     for (vtkIdType p = 0; p < n; ++p)
     {
       const vtkIdType from = (srcFirst + ids[p]) * nc;

@@ -126,41 +126,10 @@ struct FiniteRangeWorker
   template <typename ArrayT>
   void operator()(ArrayT* array, int component, double& lo, double& hi) const
   {
-    using T = vtk::GetAPIType<ArrayT>;
-    const int nc = array->GetNumberOfComponents();
-    T low = std::numeric_limits<T>::max();
-    T high = std::numeric_limits<T>::lowest();
-    bool any = false;
-    if (component >= 0 && nc == 1)
+    lo = std::numeric_limits<double>::infinity();
+    hi = -lo;
+    if (component < 0)
     {
-      for (const T v : vtk::DataArrayValueRange<1>(array))
-      {
-        if (std::is_floating_point<T>::value && !std::isfinite(static_cast<double>(v)))
-        {
-          continue;
-        }
-        low = v < low ? v : low;
-        high = v > high ? v : high;
-        any = true;
-      }
-    }
-    else if (component >= 0)
-    {
-      for (const auto tuple : vtk::DataArrayTupleRange(array))
-      {
-        const T v = tuple[component];
-        if (std::is_floating_point<T>::value && !std::isfinite(static_cast<double>(v)))
-        {
-          continue;
-        }
-        low = v < low ? v : low;
-        high = v > high ? v : high;
-        any = true;
-      }
-    }
-    else
-    {
-      double mlo = std::numeric_limits<double>::infinity(), mhi = -mlo;
       for (const auto tuple : vtk::DataArrayTupleRange(array))
       {
         double sum = 0.0;
@@ -171,16 +140,37 @@ struct FiniteRangeWorker
         const double m = std::sqrt(sum);
         if (std::isfinite(m))
         {
-          mlo = std::min(mlo, m);
-          mhi = std::max(mhi, m);
+          lo = std::min(lo, m);
+          hi = std::max(hi, m);
         }
       }
-      lo = mlo;
-      hi = mhi;
       return;
     }
-    lo = any ? static_cast<double>(low) : std::numeric_limits<double>::infinity();
-    hi = any ? static_cast<double>(high) : -std::numeric_limits<double>::infinity();
+    // The component's values, a stride apart; in the array's own type so the
+    // loop stays cheap.
+    using T = vtk::GetAPIType<ArrayT>;
+    const auto values = vtk::DataArrayValueRange(array);
+    const vtkIdType n = values.size();
+    const int nc = array->GetNumberOfComponents();
+    T low = std::numeric_limits<T>::max();
+    T high = std::numeric_limits<T>::lowest();
+    bool any = false;
+    for (vtkIdType i = component; i < n; i += nc)
+    {
+      const T v = values[i];
+      if (std::is_floating_point<T>::value && !std::isfinite(static_cast<double>(v)))
+      {
+        continue;
+      }
+      low = v < low ? v : low;
+      high = v > high ? v : high;
+      any = true;
+    }
+    if (any)
+    {
+      lo = static_cast<double>(low);
+      hi = static_cast<double>(high);
+    }
   }
 };
 

@@ -1,9 +1,8 @@
 // A real volume: the MRI brain ch2bet.nii.gz of Debian's mricron-data, read
 // with vtkNIFTIImageReader and normalised by its range. Points fall inside the
 // brain (non-zero voxels), and brighter tissue gets more points per voxel.
+#include "MriTestUtilities.h"
 #include "SamplerTestUtilities.h"
-#include "vtkNIFTIImageReader.h"
-#include "vtksys/SystemTools.hxx"
 
 #include <vector>
 
@@ -11,21 +10,17 @@ using namespace bluenoise_test;
 
 int main(int argc, char* argv[])
 {
-  const std::string path = argc > 1 ? argv[1] : "/usr/share/mricron/templates/ch2bet.nii.gz";
-  if (!vtksys::SystemTools::FileExists(path, true))
+  const auto image = ReadMri(argc, argv);
+  if (!image)
   {
-    std::cout << "SKIP: " << path << " not found (install Debian's mricron-data)" << std::endl;
-    return 125;
+    return SkipReturnCode;
   }
-  vtkNew<vtkNIFTIImageReader> reader;
-  reader->SetFileName(path.c_str());
   vtkNew<vtkErrorDiffusionSampler> sampler;
-  sampler->SetInputConnection(reader->GetOutputPort());
+  sampler->SetInputData(image);
   sampler->SetDensityMappingToScalarRange();
   sampler->SetDensityScale(0.5);
   sampler->GenerateMaskOn();
   sampler->Update();
-  vtkImageData* image = reader->GetOutput();
   vtkDataArray* intensity = image->GetPointData()->GetScalars();
   vtkDataArray* mask = sampler->GetMaskOutput()->GetPointData()->GetScalars();
   const vtkIdType n = sampler->GetOutput()->GetNumberOfPoints();

@@ -5,11 +5,10 @@
 // are compared with the sum of the densities there. When empty voxels
 // absorbed the error diffused into them, shell 1 held about half of its
 // expected samples and the shells behind it too many.
+#include "MriTestUtilities.h"
 #include "SamplerTestUtilities.h"
 #include "vtkDataArray.h"
-#include "vtkNIFTIImageReader.h"
 #include "vtkPointData.h"
-#include "vtksys/SystemTools.hxx"
 
 #include <array>
 #include <cmath>
@@ -107,16 +106,11 @@ Tally Measure(vtkImageData* image, const std::vector<int>& shell, const std::vec
 
 int main(int argc, char* argv[])
 {
-  const std::string path = argc > 1 ? argv[1] : "/usr/share/mricron/templates/ch2bet.nii.gz";
-  if (!vtksys::SystemTools::FileExists(path, true))
+  const auto image = ReadMri(argc, argv);
+  if (!image)
   {
-    std::cout << "SKIP: " << path << " not found (install Debian's mricron-data)" << std::endl;
-    return 125;
+    return SkipReturnCode;
   }
-  vtkNew<vtkNIFTIImageReader> reader;
-  reader->SetFileName(path.c_str());
-  reader->Update();
-  vtkImageData* image = reader->GetOutput();
   vtkDataArray* intensity = image->GetPointData()->GetScalars();
   double range[2];
   intensity->GetRange(range);
