@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: Copyright (c) 2025-2026 the BlueNoiseSampling contributors
+// SPDX-License-Identifier: BSD-3-Clause
 // bluenoise-boundary-study: how the sampler's boundary handling shows in the
 // spectrum. For each density level it samples a constant L^3 cube and prints
 // the mean anisotropy (dB, shells 1 .. L/2) and L(g) of the whole volume and

@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: Copyright (c) 2025-2026 the BlueNoiseSampling contributors
+// SPDX-License-Identifier: BSD-3-Clause
 // bluenoise-optimize: the paper's parameter search (section 4.2). For each key
 // density level it minimises T(g) = w L(g) + (1 - w) S(g) over the six
 // diffusion coefficients and m(g) with Nelder-Mead, starting from a table's

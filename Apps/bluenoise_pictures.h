@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: Copyright (c) 2025-2026 the BlueNoiseSampling contributors
+// SPDX-License-Identifier: BSD-3-Clause
 // Off-screen pictures of the main job (bluenoise-sample): the sampled points
 // rendered in 3D (samples.png) and the blue-noise spectrum plotted as in the
 // paper's Fig. 7(b) (spectrum.png). Both need an OpenGL context; with VTK's X

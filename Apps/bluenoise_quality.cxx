@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: Copyright (c) 2025-2026 the BlueNoiseSampling contributors
+// SPDX-License-Identifier: BSD-3-Clause
 // bluenoise-quality: the quality report of the parameter sets. For each density
 // level it measures L(g), S(g), T(g) and the mean anisotropy (dB, shells
 // 1 .. L/2) of single realisations on an L^3 cube, mean and standard deviation

@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: Copyright (c) 2025-2026 the BlueNoiseSampling contributors
+// SPDX-License-Identifier: BSD-3-Clause
 // bluenoise-sample: the project's main job. Samples a volume by importance
 // with vtkErrorDiffusionSampler and writes the points as a .vtp, the blue-noise
 // spectrum of a uniform-density run with the same number of points and

@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: Copyright (c) 2025-2026 the BlueNoiseSampling contributors
+// SPDX-License-Identifier: BSD-3-Clause
 // Reading VTK XML image files (.vti) for the main job (bluenoise-sample).
 //
 // VTK's XML parser (VTK < 9.3.1) stops feeding Expat at the <AppendedData>

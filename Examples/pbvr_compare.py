@@ -1,3 +1,5 @@
+# SPDX-FileCopyrightText: Copyright (c) 2025-2026 the BlueNoiseSampling contributors
+# SPDX-License-Identifier: BSD-3-Clause
 """Particle-based volume rendering with blue-noise particles (paper Fig. 12).
 
 Renders a volume three ways with the same colour and opacity transfer

@@ -1,3 +1,5 @@
+# SPDX-FileCopyrightText: Copyright (c) 2025-2026 the BlueNoiseSampling contributors
+# SPDX-License-Identifier: BSD-3-Clause
 """ParaView macro: particle-based volume rendering of the active volume.
 
 Particles drawn by the BlueNoiseSampling plugin's Error Diffusion Sampler with

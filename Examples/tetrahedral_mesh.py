@@ -1,4 +1,6 @@
 #!/usr/bin/env python3
+# SPDX-FileCopyrightText: Copyright (c) 2025-2026 the BlueNoiseSampling contributors
+# SPDX-License-Identifier: BSD-3-Clause
 """Tetrahedral meshing of importance samples: the "vectorised volume" (paper Fig. 13).
 
 A volume is sampled with vtkErrorDiffusionSampler (Method ErrorDiffusion, blue

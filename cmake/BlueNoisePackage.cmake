@@ -1,3 +1,5 @@
+# SPDX-FileCopyrightText: Copyright (c) 2025-2026 the BlueNoiseSampling contributors
+# SPDX-License-Identifier: BSD-3-Clause
 # Installs a CMake package so a VTK application can
 #   find_package(BlueNoiseSampling REQUIRED)
 #   target_link_libraries(app PRIVATE BlueNoise::FiltersBlueNoise)

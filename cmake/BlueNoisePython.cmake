@@ -1,3 +1,5 @@
+# SPDX-FileCopyrightText: Copyright (c) 2025-2026 the BlueNoiseSampling contributors
+# SPDX-License-Identifier: BSD-3-Clause
 # Python wrapping of the module: `from bluenoise import vtkErrorDiffusionSampler`
 # works in any Python that has the VTK the module was built against (pvpython,
 # or Debian's python3 with python3-paraview's vtkmodules).

@@ -1,3 +1,5 @@
+# SPDX-FileCopyrightText: Copyright (c) 2025-2026 the BlueNoiseSampling contributors
+# SPDX-License-Identifier: BSD-3-Clause
 """Blue-noise sampling of volumes by 3D error diffusion, and a 3D blue-noise spectrum.
 
 vtkErrorDiffusionSampler: vtkImageData in, blue-noise sample points (vtkPolyData) out.

@@ -1,4 +1,6 @@
 #!/usr/bin/env bash
+# SPDX-FileCopyrightText: Copyright (c) 2025-2026 the BlueNoiseSampling contributors
+# SPDX-License-Identifier: BSD-3-Clause
 # Installs the packages and builds the programs (no tests) in _build/main; the
 # build output goes to stderr. Used by main.sh and quality-report.sh.
 set -euo pipefail

@@ -1,4 +1,6 @@
 #!/usr/bin/env bash
+# SPDX-FileCopyrightText: Copyright (c) 2025-2026 the BlueNoiseSampling contributors
+# SPDX-License-Identifier: BSD-3-Clause
 # Installs the Debian (bookworm) packages the project builds, tests and runs with.
 # Runs as root (or through sudo). Safe to run again: apt-get skips what is there.
 set -euo pipefail

@@ -1,4 +1,6 @@
 #!/usr/bin/env bash
+# SPDX-FileCopyrightText: Copyright (c) 2025-2026 the BlueNoiseSampling contributors
+# SPDX-License-Identifier: BSD-3-Clause
 # Installs what is needed, builds, and runs the main job: importance sampling of
 # a volume (default: the MRI brain from Debian's mricron-data) into blue-noise
 # points, the blue-noise spectrum of a uniform-density run, and two pictures

@@ -1,4 +1,6 @@
 #!/usr/bin/env bash
+# SPDX-FileCopyrightText: Copyright (c) 2025-2026 the BlueNoiseSampling contributors
+# SPDX-License-Identifier: BSD-3-Clause
 # Regenerates Testing/QualityReport.md: bluenoise-quality on a 128^3 cube with 4
 # seeds for the Optimized, Paper and Fixed parameter sets, white noise and a
 # Poisson-disk set (about 30 minutes on 2 cores; the Poisson-disk sets dominate).

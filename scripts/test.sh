@@ -1,4 +1,6 @@
 #!/usr/bin/env bash
+# SPDX-FileCopyrightText: Copyright (c) 2025-2026 the BlueNoiseSampling contributors
+# SPDX-License-Identifier: BSD-3-Clause
 # Installs what is needed, builds and runs the whole test suite:
 #   1. against the ParaView 5.11 SDK (module, plugin, Python, all tests);
 #   2. VTK-only (no ParaView plugin) against ParaView's VTK through VTK_DIR;

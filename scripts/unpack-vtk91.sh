@@ -1,4 +1,6 @@
 #!/usr/bin/env bash
+# SPDX-FileCopyrightText: Copyright (c) 2025-2026 the BlueNoiseSampling contributors
+# SPDX-License-Identifier: BSD-3-Clause
 # Unpacks Debian's VTK 9.1 (libvtk9-dev and the packages its CMake files refer
 # to) into a private prefix with dpkg -x, without installing it: Debian cannot
 # install it beside python3-paraview. Used to build and test against a real

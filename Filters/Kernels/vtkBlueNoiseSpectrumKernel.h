@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: Copyright (c) 2025-2026 the BlueNoiseSampling contributors
+// SPDX-License-Identifier: BSD-3-Clause
 /**
  * @class   vtkBlueNoiseSpectrumKernel
  * @brief   The 3D blue-noise spectrum metric of the paper (section 4, Eq. 2-11).

@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: Copyright (c) 2025-2026 the BlueNoiseSampling contributors
+// SPDX-License-Identifier: BSD-3-Clause
 /**
  * @class   vtkErrorDiffusionPointAssembler
  * @brief   Builds the sampler's output points, layer by layer, from the

@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: Copyright (c) 2025-2026 the BlueNoiseSampling contributors
+// SPDX-License-Identifier: BSD-3-Clause
 /**
  * @class   vtkErrorDiffusionSampler
  * @brief   Blue-noise importance sampling of a volume by 3D error diffusion.

@@ -1,3 +1,5 @@
+# SPDX-FileCopyrightText: Copyright (c) 2025-2026 the BlueNoiseSampling contributors
+# SPDX-License-Identifier: BSD-3-Clause
 """pvbatch script: Examples/pbvr_gui_macro.py on a volume as the active source.
 
     pvbatch PBVRMacroScript.py --examples <source>/Examples --plugin BlueNoiseSampling.so \

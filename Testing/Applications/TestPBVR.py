@@ -1,3 +1,5 @@
+# SPDX-FileCopyrightText: Copyright (c) 2025-2026 the BlueNoiseSampling contributors
+# SPDX-License-Identifier: BSD-3-Clause
 """Runs the particle-based volume rendering examples under pvbatch and checks their output.
 
     python3 TestPBVR.py --mode compare --pvbatch pvbatch [--xvfb-run xvfb-run] \

@@ -1,3 +1,5 @@
+# SPDX-FileCopyrightText: Copyright (c) 2025-2026 the BlueNoiseSampling contributors
+# SPDX-License-Identifier: BSD-3-Clause
 """Hit-and-miss (WhiteNoise) against error diffusion (ErrorDiffusion) in vtkErrorDiffusionSampler.
 
     PYTHONPATH=<build>/lib/python3/dist-packages python3 TestSamplingMethods.py

@@ -1,3 +1,5 @@
+# SPDX-FileCopyrightText: Copyright (c) 2025-2026 the BlueNoiseSampling contributors
+# SPDX-License-Identifier: BSD-3-Clause
 """Tetrahedral meshing of samples (Examples/tetrahedral_mesh.py) on an analytic volume.
 
     PYTHONPATH=<build>/lib/python3/dist-packages python3 TestTetrahedralMesh.py \

@@ -1,3 +1,5 @@
+# SPDX-FileCopyrightText: Copyright (c) 2025-2026 the BlueNoiseSampling contributors
+# SPDX-License-Identifier: BSD-3-Clause
 """DensityMapping TransferFunction, as particle-based volume rendering uses it.
 
     PYTHONPATH=<build>/lib/python3/dist-packages python3 TestTransferFunctionDensity.py

@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: Copyright (c) 2025-2026 the BlueNoiseSampling contributors
+// SPDX-License-Identifier: BSD-3-Clause
 // Sampling speed: the kernel alone and the whole VTK filter, on constant
 // cubes of 128^3 and 256^3 at g = 8/255 and 127/255, and the filter on a
 // real volume (the MRI brain ch2bet of Debian's mricron-data, 181 x 217 x

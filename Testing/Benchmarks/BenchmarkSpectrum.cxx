@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: Copyright (c) 2025-2026 the BlueNoiseSampling contributors
+// SPDX-License-Identifier: BSD-3-Clause
 // Time of the blue-noise spectrum metric for one realisation: a random mask at
 // g = 0.05 on L^3 grids. "Kernel" is the reusable path (buffers and plan kept,
 // as the optimiser uses it); "Transform" and "Compute" split it into the FFT

@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: Copyright (c) 2025-2026 the BlueNoiseSampling contributors
+// SPDX-License-Identifier: BSD-3-Clause
 // Small helpers shared by the C++ tests: failure reporting, an error observer
 // and constant / ramp volumes.
 #ifndef BlueNoiseTestUtilities_h

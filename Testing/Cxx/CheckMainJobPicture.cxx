@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: Copyright (c) 2025-2026 the BlueNoiseSampling contributors
+// SPDX-License-Identifier: BSD-3-Clause
 // CheckMainJobPicture PNG [MIN_WIDTH MIN_HEIGHT]: exits non-zero unless PNG is
 // a readable RGB(A) picture of at least MIN_WIDTH x MIN_HEIGHT (default
 // 400 x 300) that is not blank: at least 16 distinct colours, at least 2% of

@@ -1,3 +1,5 @@
+# SPDX-FileCopyrightText: Copyright (c) 2025-2026 the BlueNoiseSampling contributors
+# SPDX-License-Identifier: BSD-3-Clause
 # The main job as a user sees it: bluenoise-sample on Data/brain-small.vti with
 # 20000 points, under xvfb-run when there is one (else with --no-pictures),
 # then checks of its exit status, its files (samples.vtp, spectrum.csv,

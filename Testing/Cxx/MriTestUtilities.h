@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: Copyright (c) 2025-2026 the BlueNoiseSampling contributors
+// SPDX-License-Identifier: BSD-3-Clause
 // The real volume of the sampler tests: ch2bet.nii.gz from Debian's
 // mricron-data (or the file given as the first argument). Tests that use it
 // link VTK::IOImage and VTK::vtksys and skip (exit code 125) without it.

@@ -1,3 +1,5 @@
+# SPDX-FileCopyrightText: Copyright (c) 2025-2026 the BlueNoiseSampling contributors
+# SPDX-License-Identifier: BSD-3-Clause
 # Driver of the MainJob test (cmake -P): runs the main job as a user would and
 # checks what it prints and writes. Variables (-D):
 #   PROGRAM   bluenoise-sample          CHECKER  CheckMainJobPicture

@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: Copyright (c) 2025-2026 the BlueNoiseSampling contributors
+// SPDX-License-Identifier: BSD-3-Clause
 // Running the sampler in tests.
 #ifndef SamplerTestUtilities_h
 #define SamplerTestUtilities_h

@@ -1,3 +1,5 @@
+# SPDX-FileCopyrightText: Copyright (c) 2025-2026 the BlueNoiseSampling contributors
+# SPDX-License-Identifier: BSD-3-Clause
 bluenoise_add_test(TestErrorDiffusionParameterTable LABELS sampler)
 bluenoise_add_test(TestErrorDiffusionSamplerCounts LABELS sampler)
 bluenoise_add_test(TestErrorDiffusionSamplerDeterminism LABELS sampler)

@@ -1,3 +1,5 @@
+# SPDX-FileCopyrightText: Copyright (c) 2025-2026 the BlueNoiseSampling contributors
+# SPDX-License-Identifier: BSD-3-Clause
 # Tests of the 3D blue-noise spectrum metric (vtkBlueNoiseSpectrumKernel and
 # the vtkBlueNoiseSpectrum filter).
 bluenoise_add_test(TestBlueNoiseSpectrumSinglePoint LABELS spectrum)

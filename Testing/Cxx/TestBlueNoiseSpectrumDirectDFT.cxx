@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: Copyright (c) 2025-2026 the BlueNoiseSampling contributors
+// SPDX-License-Identifier: BSD-3-Clause
 // The kernel against a direct O(V^2) DFT over the full spectrum with two-pass
 // statistics, written from the definitions in vtkBlueNoiseSpectrumKernel.h:
 // every shell value, anisotropy, segmented curve, L, C, S, T and the centred

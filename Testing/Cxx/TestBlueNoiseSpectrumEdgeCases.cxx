@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: Copyright (c) 2025-2026 the BlueNoiseSampling contributors
+// SPDX-License-Identifier: BSD-3-Clause
 // Edge cases of the kernel and the filter: a non-cubic grid, bad input (clear
 // errors, empty outputs, unchanged state), a single point through the filter
 // and a full mask (g = 1: a warning, no NaN anywhere).

@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: Copyright (c) 2025-2026 the BlueNoiseSampling contributors
+// SPDX-License-Identifier: BSD-3-Clause
 // A regular lattice of spacing s puts all its energy on the reciprocal lattice
 // (frequencies that are multiples of 1/s on every axis), P = N there, and none
 // anywhere else. Checked on the centred spectrum and on the shell sums.

@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: Copyright (c) 2025-2026 the BlueNoiseSampling contributors
+// SPDX-License-Identifier: BSD-3-Clause
 // Parseval: sum over all f of |B(f)|^2 = V sum b^2, so the non-DC power is
 // sum_{f != 0} P(f) = (V sum b^2 - N^2) / N. Checked on the centred spectrum
 // image and on the shell sums (RadialPower * ShellCount), for masks and

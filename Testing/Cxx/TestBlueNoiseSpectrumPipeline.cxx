@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: Copyright (c) 2025-2026 the BlueNoiseSampling contributors
+// SPDX-License-Identifier: BSD-3-Clause
 // The filter against the kernel: points at voxel centres with the sampler's
 // grid field data (rotated, offset extent), an image mask (uint8, a converted
 // integer type, cell data), averaged realisations (two connections, a

@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: Copyright (c) 2025-2026 the BlueNoiseSampling contributors
+// SPDX-License-Identifier: BSD-3-Clause
 // A single point has |B(f)| = 1 everywhere: P = 1 on every shell and segment,
 // anisotropy 0, flat SRAPS (C = 0 by the constant-curve rule, S = 1), and L is
 // the fraction of non-DC frequencies below f_g.

@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: Copyright (c) 2025-2026 the BlueNoiseSampling contributors
+// SPDX-License-Identifier: BSD-3-Clause
 // Kernels used from several threads at once: the FFTW plans of new shapes are
 // made concurrently (under the kernel's lock) and the one-call Evaluate keeps a
 // kernel per thread. Every concurrent result must equal the one computed

@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: Copyright (c) 2025-2026 the BlueNoiseSampling contributors
+// SPDX-License-Identifier: BSD-3-Clause
 // Helpers shared by the spectrum tests: random volumes, tolerant comparison, a
 // NaN sweep over a kernel result and the filter's table read back as a result.
 #ifndef TestBlueNoiseSpectrumUtilities_h

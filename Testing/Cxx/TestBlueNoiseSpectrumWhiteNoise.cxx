@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: Copyright (c) 2025-2026 the BlueNoiseSampling contributors
+// SPDX-License-Identifier: BSD-3-Clause
 // White noise (Bernoulli g per voxel) on 64^3: flat mean power 1 - g, an
 // isotropic spectrum whose shell variance is the exponential law's (anisotropy
 // 1, 0 dB, for one realisation; 1/R for R averaged realisations) and a

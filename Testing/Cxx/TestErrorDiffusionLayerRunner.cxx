@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: Copyright (c) 2025-2026 the BlueNoiseSampling contributors
+// SPDX-License-Identifier: BSD-3-Clause
 // vtkErrorDiffusionLayerRunner: on one thread or two, the layers reach the
 // consumer in order with the masks a plain ProcessLayer loop gives; a consumer
 // that says stop, or a callback that throws, ends the run cleanly; Finish gets

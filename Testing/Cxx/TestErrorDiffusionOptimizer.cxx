@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: Copyright (c) 2025-2026 the BlueNoiseSampling contributors
+// SPDX-License-Identifier: BSD-3-Clause
 // The parameter optimiser on a tiny grid with a tiny budget lowers T(g) from
 // its start point, returns normalised coefficients, and its figures agree with
 // Evaluate() on the same settings (one metric implementation).

@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: Copyright (c) 2025-2026 the BlueNoiseSampling contributors
+// SPDX-License-Identifier: BSD-3-Clause
 // The parameter table: Table 1 verbatim, interpolation between keys, the
 // g > 0.5 mirror, and the text format (round trip, errors naming the line).
 #include "BlueNoiseTestUtilities.h"

@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: Copyright (c) 2025-2026 the BlueNoiseSampling contributors
+// SPDX-License-Identifier: BSD-3-Clause
 // Input arrays carried to the samples; the Density array follows the chosen
 // mapping (identity, array range, custom range, transfer function, scale,
 // component, magnitude); zero density and NaN give no samples.

@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: Copyright (c) 2025-2026 the BlueNoiseSampling contributors
+// SPDX-License-Identifier: BSD-3-Clause
 // The sampler's points are blue noise: with the paper's parameters, the
 // low-frequency ratio L(g) is below that of white noise (independent
 // Bernoulli voxels) of the same density, and the power well below f_g / 2

@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: Copyright (c) 2025-2026 the BlueNoiseSampling contributors
+// SPDX-License-Identifier: BSD-3-Clause
 // The number of samples: g * L^3 for constant densities (paper Eq. 12), and
 // per-slab counts that follow a density ramp.
 #include "SamplerTestUtilities.h"

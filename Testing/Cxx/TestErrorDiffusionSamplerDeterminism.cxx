@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: Copyright (c) 2025-2026 the BlueNoiseSampling contributors
+// SPDX-License-Identifier: BSD-3-Clause
 // Same seed: the same points bit for bit; another seed: other points; the scan
 // on a worker thread or not: the same output. Density g and 1 - g with the same
 // seed: complementary masks (the mirrored process).

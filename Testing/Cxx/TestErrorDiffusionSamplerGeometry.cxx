@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: Copyright (c) 2025-2026 the BlueNoiseSampling contributors
+// SPDX-License-Identifier: BSD-3-Clause
 // World coordinates: with a non-trivial origin, spacing and direction matrix
 // (and an extent that does not start at 0), every point sits on the centre of
 // a sampled voxel; the field data records the sampling grid.

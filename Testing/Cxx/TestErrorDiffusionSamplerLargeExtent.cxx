@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: Copyright (c) 2025-2026 the BlueNoiseSampling contributors
+// SPDX-License-Identifier: BSD-3-Clause
 // More than 2^31 voxels (the voxel count overflows 32-bit integers): the
 // sampler works with vtkIdType throughout, and the last layers are sampled.
 #include "SamplerTestUtilities.h"

@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: Copyright (c) 2025-2026 the BlueNoiseSampling contributors
+// SPDX-License-Identifier: BSD-3-Clause
 // Pieces: the sampler samples whatever extent the pipeline hands it. Two
 // pieces of an analytic source are sampled separately; every point of a piece
 // lies in that piece's extent, the field data records that extent, and the

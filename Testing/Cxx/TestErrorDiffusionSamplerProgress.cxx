@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: Copyright (c) 2025-2026 the BlueNoiseSampling contributors
+// SPDX-License-Identifier: BSD-3-Clause
 // Progress is reported layer by layer, from 0 to 1, and an abort requested from
 // a progress observer stops the sampling with an empty output; with the scan
 // on a worker thread (the default) and without it.

@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: Copyright (c) 2025-2026 the BlueNoiseSampling contributors
+// SPDX-License-Identifier: BSD-3-Clause
 // The rim of the support: voxels next to empty space get their share of the
 // samples. On the MRI brain ch2bet (Debian's mricron-data), density from the
 // scalar range, the samples in each shell of voxels around the empty region

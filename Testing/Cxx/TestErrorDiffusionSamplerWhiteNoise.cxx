@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: Copyright (c) 2025-2026 the BlueNoiseSampling contributors
+// SPDX-License-Identifier: BSD-3-Clause
 // Method WhiteNoise (hit and miss): the expected count, determinism with the
 // seed, no samples where the density is 0, and a flat (white) spectrum.
 #include "SamplerTestUtilities.h"

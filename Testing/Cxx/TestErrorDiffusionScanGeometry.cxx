@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: Copyright (c) 2025-2026 the BlueNoiseSampling contributors
+// SPDX-License-Identifier: BSD-3-Clause
 // The scan and error-filter geometry the kernel runs: every voxel of a layer
 // visited once, serpentine rows, a 90 degree turn per layer over a cycle of
 // four, the paper's offsets in the first layer, and no error ever sent to a

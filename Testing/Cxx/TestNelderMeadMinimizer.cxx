@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: Copyright (c) 2025-2026 the BlueNoiseSampling contributors
+// SPDX-License-Identifier: BSD-3-Clause
 // Nelder-Mead on known functions: Rosenbrock's valley (2D and 4D) converges
 // to (1, ..., 1); a quadratic bowl is found from far away; non-finite values
 // are treated as walls.

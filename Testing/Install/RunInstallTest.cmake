@@ -1,3 +1,5 @@
+# SPDX-FileCopyrightText: Copyright (c) 2025-2026 the BlueNoiseSampling contributors
+# SPDX-License-Identifier: BSD-3-Clause
 # Installs the build tree to a scratch prefix and uses it as a user would.
 #
 #   cmake -DBUILD_DIR=... -DPREFIX=... -DWORK_DIR=... -DEXAMPLE_SOURCE=...

@@ -1,3 +1,5 @@
+# SPDX-FileCopyrightText: Copyright (c) 2025-2026 the BlueNoiseSampling contributors
+# SPDX-License-Identifier: BSD-3-Clause
 """The plugin in the real ParaView GUI, under Xvfb.
 
     python3 TestPluginGUI.py --paraview /usr/bin/paraview --plugin-dir DIR --out DIR \

@@ -1,3 +1,5 @@
+# SPDX-FileCopyrightText: Copyright (c) 2025-2026 the BlueNoiseSampling contributors
+# SPDX-License-Identifier: BSD-3-Clause
 """Runs inside the ParaView GUI (paraview --script=THIS --exit), see TestPluginGUI.py.
 
 The plugin is loaded by the GUI itself (--plugins); this script does what a user

@@ -1,3 +1,5 @@
+# SPDX-FileCopyrightText: Copyright (c) 2025-2026 the BlueNoiseSampling contributors
+# SPDX-License-Identifier: BSD-3-Clause
 """The BlueNoiseSampling plugin in pvpython, as a Python user drives it.
 
     pvpython TestPluginPVPython.py --plugin BlueNoiseSampling.so --part wavelet

@@ -1,3 +1,5 @@
+# SPDX-FileCopyrightText: Copyright (c) 2025-2026 the BlueNoiseSampling contributors
+# SPDX-License-Identifier: BSD-3-Clause
 """Every property of the plugin's proxies reaches its VTK object.
 
     pvpython TestPluginProperties.py --plugin BlueNoiseSampling.so --xml BlueNoiseSampling.xml

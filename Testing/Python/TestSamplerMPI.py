@@ -1,3 +1,5 @@
+# SPDX-FileCopyrightText: Copyright (c) 2025-2026 the BlueNoiseSampling contributors
+# SPDX-License-Identifier: BSD-3-Clause
 """The sampler on the pieces of a distributed run: pvbatch under mpiexec with 2 processes.
 
     mpiexec -n 2 pvbatch TestSamplerMPI.py --plugin BlueNoiseSampling.so

@@ -1,3 +1,5 @@
+# SPDX-FileCopyrightText: Copyright (c) 2025-2026 the BlueNoiseSampling contributors
+# SPDX-License-Identifier: BSD-3-Clause
 """The Python wrapping in plain VTK (no ParaView): `from bluenoise import ...`.
 
 Run with the Python of the VTK the module was built against and

@@ -1,3 +1,5 @@
+# SPDX-FileCopyrightText: Copyright (c) 2025-2026 the BlueNoiseSampling contributors
+# SPDX-License-Identifier: BSD-3-Clause
 """Check reporting shared by the Python tests (Testing/Python, Testing/Applications): every check prints a line, and
 finish() exits non-zero when any failed (ctest reads the exit code)."""
 import sys

@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: Copyright (c) 2025-2026 the BlueNoiseSampling contributors
+// SPDX-License-Identifier: BSD-3-Clause
 // Uses the installed BlueNoise::FiltersBlueNoise: samples a small volume with a
 // density ramp and measures the points with the spectrum. Returns non-zero
 // when a result is wrong.
