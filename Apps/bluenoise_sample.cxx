@@ -444,26 +444,20 @@ int main(int argc, char* argv[])
   sampler->SetSeed(seed);
   SetParameters(sampler, parameters);
 
-  // The expected count is the sum of the mapped densities; choose the scale
-  // that makes it `points` (the clamp at 1 can only lower it, so refine).
+  // The point budget (the module solves the density scale), or a scale.
   vtkDataArray* scalars = arrayName.empty() ? image->GetPointData()->GetScalars()
                                             : image->GetPointData()->GetArray(arrayName.c_str());
-  if (scale < 0.0)
+  if (scale >= 0.0)
   {
-    scale = 1.0;
-    for (int iteration = 0; iteration < 8; ++iteration)
-    {
-      const double sum = ExpectedCount(scalars, scale);
-      if (!(sum > 0.0))
-      {
-        break;
-      }
-      scale *= points / sum;
-    }
+    sampler->UseNumberOfPointsOff();
+    sampler->SetDensityScale(scale);
   }
-  sampler->SetDensityScale(scale);
+  else
+  {
+    sampler->SetNumberOfPoints(static_cast<vtkIdType>(std::llround(points)));
+  }
   vtkIdType occupied = 0;
-  const double expected = ExpectedCount(scalars, scale, &occupied);
+  ExpectedCount(scalars, 1.0, &occupied);
 
   vtkNew<vtkTimerLog> timer;
   timer->StartTimer();
@@ -559,6 +553,8 @@ int main(int argc, char* argv[])
     }
   }
 
+  const double expected =
+    samples->GetFieldData()->GetArray("ExpectedNumberOfPoints")->GetComponent(0, 0);
   std::cout << "voxels=" << image->GetNumberOfPoints() << " points=" << samples->GetNumberOfPoints()
             << " expected=" << static_cast<long long>(std::llround(expected))
             << " seconds=" << timer->GetElapsedTime() << std::endl;

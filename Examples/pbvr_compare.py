@@ -451,6 +451,7 @@ def main(argv=None):
                     s.Method = method
                     s.DensityMapping = "TransferFunction"
                     s.TransferFunction = density_tf
+                    s.UseNumberOfPoints = 0
                     s.DensityScale = scale
                     s.Seed = args.seed + e
                     s.UpdatePipeline()

@@ -96,6 +96,7 @@ def setup_pbvr(source=None, view=None, target=TARGET_PARTICLES, method=METHOD, s
     sampler.Seed = seed
     sampler.DensityMapping = "TransferFunction"
     sampler.TransferFunction = otf
+    sampler.UseNumberOfPoints = 0
     # Expected count at DensityScale 1 = sum of the opacities (few voxels reach 1).
     sampler.DensityScale = 1.0
     sampler.UpdatePipeline()

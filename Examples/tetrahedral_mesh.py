@@ -249,6 +249,7 @@ def run_sampler(image, array, method, scale, seed):
     sampler.SetInputData(image)
     sampler.SetInputArrayToProcess(0, 0, 0, vtkDataObject.FIELD_ASSOCIATION_POINTS, array)
     sampler.SetDensityMappingToScalarRange()
+    sampler.UseNumberOfPointsOff()
     sampler.SetDensityScale(scale)
     sampler.SetMethod(METHODS[method] if isinstance(method, str) else method)
     sampler.SetSeed(seed)

@@ -2,11 +2,11 @@
 // SPDX-License-Identifier: BSD-3-Clause
 #include "vtkErrorDiffusionKernel.h"
 
+#include "vtkErrorDiffusionChargeCurve.h"
+
 #include <algorithm>
+#include <cmath>
 #include <cstring>
-#include <map>
-#include <mutex>
-#include <sstream>
 
 namespace
 {
@@ -27,16 +27,47 @@ inline bool Active(float g)
   return g > 0.0f && g < 1.0f;
 }
 
-// Calibrated charges per (table, modulation scale): calibration costs a few
-// milliseconds, a sampler may run many times with the same parameters.
-std::mutex ChargeCacheMutex;
-std::map<std::string, std::vector<float>> ChargeCache;
+// The parameter table is indexed by the top 17 bits of min(g, 1 - g) as a
+// float (sign, exponent and 8 bits of mantissa): 2^-8 relative steps of the
+// density from 2^-20 (below which the parameters no longer change) to 0.5.
+constexpr int ParameterShift = 15;
+std::uint32_t FloatBits(float f)
+{
+  std::uint32_t bits = 0;
+  std::memcpy(&bits, &f, sizeof(bits));
+  return bits;
+}
+float BitsFloat(std::uint32_t bits)
+{
+  float f = 0.0f;
+  std::memcpy(&f, &bits, sizeof(f));
+  return f;
+}
+const std::uint32_t ParameterBase = FloatBits(0x1p-20f) >> ParameterShift;
+const size_t ParameterEntries = (FloatBits(0.5f) >> ParameterShift) - ParameterBase + 1;
+
+size_t ParameterIndex(float minority)
+{
+  const std::uint32_t key = FloatBits(minority) >> ParameterShift;
+  return key <= ParameterBase ? 0 : std::min<size_t>(key - ParameterBase, ParameterEntries - 1);
+}
+
+// The density an entry stands for: the middle of its bucket (0.5 for the last).
+float ParameterDensity(size_t index)
+{
+  if (index + 1 == ParameterEntries)
+  {
+    return 0.5f;
+  }
+  return BitsFloat(static_cast<std::uint32_t>((index + ParameterBase) << ParameterShift) |
+    (1u << (ParameterShift - 1)));
+}
 }
 
 //------------------------------------------------------------------------------
 void vtkErrorDiffusionKernel::Generator::Seed(std::uint64_t seed, std::uint64_t stream)
 {
-  // PCG32 initialisation (O'Neill 2014): any seed gives a full-period stream.
+  // PCG32 initialization (O'Neill 2014): any seed gives a full-period stream.
   this->State = 0;
   this->Increment = (stream << 1u) | 1u;
   this->Uniform();
@@ -61,6 +92,9 @@ vtkErrorDiffusionKernel::vtkErrorDiffusionKernel()
   : Table(vtkErrorDiffusionParameterTable::Paper())
 {
 }
+
+//------------------------------------------------------------------------------
+vtkErrorDiffusionKernel::~vtkErrorDiffusionKernel() = default;
 
 //------------------------------------------------------------------------------
 vtkErrorDiffusionKernel::LayerScan vtkErrorDiffusionKernel::GetLayerScan(
@@ -90,129 +124,123 @@ void vtkErrorDiffusionKernel::GetTargetOffsets(const LayerScan& scan, int row, i
   const int du[2] = { sign * PhaseU[scan.Phase][0], sign * PhaseU[scan.Phase][1] };
   const int* dv = PhaseV[scan.Phase];
   const int table[6][3] = {
-    { du[0], du[1], 0 },                 // A100
+    { du[0], du[1], 0 },                   // A100
     { -du[0] + dv[0], -du[1] + dv[1], 0 },
-    { dv[0], dv[1], 0 },                 // A010
-    { -dv[0], -dv[1], 1 },               // A0-11
-    { -du[0], -du[1], 1 },
-    { 0, 0, 1 },                         // A001
+    { dv[0], dv[1], 0 },                   // A010
+    { -dv[0], -dv[1], 1 },                 // A0-11
+    { -du[0], -du[1], 1 },
+    { 0, 0, 1 },                           // A001
   };
   std::copy(&table[0][0], &table[0][0] + 18, &offsets[0][0]);
 }
 
 //------------------------------------------------------------------------------
-void vtkErrorDiffusionKernel::Begin(int nx, int ny, int nz, int firstLayer)
+void vtkErrorDiffusionKernel::Begin(int nx, int ny, int firstLayer)
 {
   this->NX = std::max(nx, 0);
   this->NY = std::max(ny, 0);
-  this->NZ = std::max(nz, 0);
   this->FirstLayer = firstLayer;
   this->LayersDone = 0;
+  this->Carry = 0.0f;
+  this->WarmedUp = false;
   this->TestedLayer = nullptr;
-  this->ParameterCache.fill(LevelParameters()); // the table or the scale may have changed
   const size_t layer = static_cast<size_t>(this->NX) * static_cast<size_t>(this->NY);
   this->Current.assign(layer, 0.0f);
   this->Next.assign(layer, 0.0f);
   this->Random.Seed(this->Seed, 0x9e3779b97f4a7c15ULL);
-  this->KeyLevels.clear();
-  for (const auto& key : this->Table.GetKeys())
+  // The table or the scale may have changed since the last run.
+  this->ParameterTable.assign(ParameterEntries, LevelParameters());
+  if (this->Method == METHOD_ERROR_DIFFUSION && this->FixedCharge < 0.0f)
   {
-    this->KeyLevels.push_back(static_cast<float>(key.Level));
-  }
-  if (this->BoundaryMode == BOUNDARY_STEADY_STATE && this->Method == METHOD_ERROR_DIFFUSION)
-  {
-    this->KeyCharges = GetSteadyStateCharges(this->Table, this->ModulationScale);
-  }
-  else
-  {
-    this->KeyCharges.assign(this->KeyLevels.size(), 0.0f);
+    this->Charges = vtkErrorDiffusionChargeCurve::Get(this->Table, this->ModulationScale);
   }
 }
 
 //------------------------------------------------------------------------------
-std::vector<float> vtkErrorDiffusionKernel::GetSteadyStateCharges(
-  const vtkErrorDiffusionParameterTable& table, double modulationScale)
+// One entry of the parameter table: the parameters of the minority density
+// the entry stands for (g <= 0.5; ParametersOf mirrors them above).
+vtkErrorDiffusionKernel::LevelParameters vtkErrorDiffusionKernel::Evaluate(float minority) const
 {
-  std::ostringstream key;
-  table.Write(key);
-  key << "scale " << modulationScale;
-  {
-    std::lock_guard<std::mutex> lock(ChargeCacheMutex);
-    auto found = ChargeCache.find(key.str());
-    if (found != ChargeCache.end())
-    {
-      return found->second;
-    }
-  }
-  // For each key density: run the uncompensated process on a constant box
-  // long enough to reach its steady state, then average the error each voxel
-  // receives (what the scan holds when it reaches it) away from the faces.
-  const int n = 24;
-  const int settle = 64;
-  const int measured = 64;
-  const int margin = 3;
-  std::vector<float> charges;
-  for (const auto& k : table.GetKeys())
-  {
-    vtkErrorDiffusionKernel probe;
-    probe.SetParameters(table);
-    probe.SetModulationScale(modulationScale);
-    probe.SetBoundaryMode(BOUNDARY_RENORMALIZE); // zero charge, no warm-up
-    probe.SetSeed(12345);
-    probe.Begin(n, n, settle + measured + 1);
-    const std::vector<float> density(static_cast<size_t>(n) * n, static_cast<float>(k.Level / 255.0));
-    std::vector<unsigned char> mask(density.size());
-    double sum = 0.0;
-    long count = 0;
-    for (int layer = 0; layer < settle + measured; ++layer)
-    {
-      probe.ScanLayer<true>(density.data(), density.data(), mask.data(), layer);
-      if (layer >= settle)
-      {
-        for (int y = margin; y < n - margin; ++y)
-        {
-          for (int x = margin; x < n - margin; ++x)
-          {
-            sum += probe.Current[x + static_cast<size_t>(n) * y];
-            ++count;
-          }
-        }
-      }
-      std::swap(probe.Current, probe.Next);
-      std::fill(probe.Next.begin(), probe.Next.end(), 0.0f);
-    }
-    charges.push_back(static_cast<float>(sum / count));
-  }
-  std::lock_guard<std::mutex> lock(ChargeCacheMutex);
-  if (ChargeCache.size() >= 1024)
-  {
-    ChargeCache.clear(); // a parameter search makes a new table per candidate
-  }
-  ChargeCache[key.str()] = charges;
-  return charges;
+  LevelParameters entry;
+  const auto params = this->Table.Evaluate(minority);
+  std::copy(params.Weights.begin(), params.Weights.end(), entry.Weights);
+  const float charge = this->FixedCharge >= 0.0f ? this->FixedCharge
+    : this->Charges                              ? this->Charges->At(minority)
+                                                 : 0.0f;
+  entry.Base = 0.5f - charge;
+  entry.Modulation = static_cast<float>(this->ModulationScale) * params.Modulation;
+  entry.Valid = true;
+  return entry;
 }
 
 //------------------------------------------------------------------------------
-float vtkErrorDiffusionKernel::ChargeAt(float g) const
+// Real volumes change g from voxel to voxel; the table spares the
+// interpolation of the parameters and the charge, which cost several times
+// the rest of a voxel's work.
+vtkErrorDiffusionKernel::LevelParameters vtkErrorDiffusionKernel::ParametersOf(float g)
 {
-  const float level = 255.0f * (g > 0.5f ? 1.0f - g : g);
-  const size_t n = this->KeyLevels.size();
-  if (n == 0)
+  const bool mirrored = g > 0.5f;
+  const float minority = mirrored ? 1.0f - g : g;
+  const size_t index = ParameterIndex(minority);
+  LevelParameters& entry = this->ParameterTable[index];
+  if (!entry.Valid)
   {
-    return 0.0f;
+    entry = this->Evaluate(ParameterDensity(index));
   }
-  if (level <= this->KeyLevels.front())
+  LevelParameters p = entry;
+  if (mirrored)
   {
-    return this->KeyCharges.front();
+    // The mirrored process: t = 0.5 + C(1 - g) - s r m(1 - g).
+    p.Base = 1.0f - entry.Base;
+    p.Modulation = -entry.Modulation;
   }
-  if (level >= this->KeyLevels.back())
+  return p;
+}
+
+//------------------------------------------------------------------------------
+void vtkErrorDiffusionKernel::EndLayer()
+{
+  std::swap(this->Current, this->Next);
+  std::fill(this->Next.begin(), this->Next.end(), 0.0f);
+  ++this->LayersDone;
+}
+
+//------------------------------------------------------------------------------
+void vtkErrorDiffusionKernel::WarmUp(const float* density, int layers)
+{
+  if (this->Method != METHOD_ERROR_DIFFUSION || layers <= 0 || this->Current.empty())
   {
-    return this->KeyCharges.back();
+    return;
   }
-  const size_t i =
-    std::upper_bound(this->KeyLevels.begin(), this->KeyLevels.end(), level) - this->KeyLevels.begin();
-  const float t = (level - this->KeyLevels[i - 1]) / (this->KeyLevels[i] - this->KeyLevels[i - 1]);
-  return this->KeyCharges[i - 1] + t * (this->KeyCharges[i] - this->KeyCharges[i - 1]);
+  this->WarmedUp = true;
+  const int cycles = (layers + 3) / 4;
+  std::vector<unsigned char> discarded(this->Current.size());
+  const int first = this->FirstLayer + this->LayersDone - 4 * cycles;
+  for (int w = 0; w < 4 * cycles; ++w)
+  {
+    this->ScanLayer(density, density, discarded.data(), first + w);
+    std::swap(this->Current, this->Next);
+    std::fill(this->Next.begin(), this->Next.end(), 0.0f);
+  }
+  this->CenterCarriedError(density);
+}
+
+//------------------------------------------------------------------------------
+void vtkErrorDiffusionKernel::CenterCarriedError(const float* density)
+{
+  double sum = this->Carry;
+  size_t active = 0;
+  for (size_t i = 0; i < this->Current.size(); ++i)
+  {
+    sum += this->Current[i];
+    active += Active(density[i]) ? 1 : 0;
+  }
+  this->Carry = 0.0f;
+  const float shift = active > 0 ? static_cast<float>(sum / static_cast<double>(active)) : 0.0f;
+  for (size_t i = 0; i < this->Current.size(); ++i)
+  {
+    this->Current[i] = Active(density[i]) ? this->Current[i] - shift : 0.0f;
+  }
 }
 
 //------------------------------------------------------------------------------
@@ -227,38 +255,64 @@ vtkIdType vtkErrorDiffusionKernel::ProcessLayer(
   {
     return this->DrawLayerIndependently(density, mask);
   }
-  const bool steady = this->BoundaryMode == BOUNDARY_STEADY_STATE;
-  if (this->LayersDone == 0 && steady && this->WarmUpLayers > 0)
+  if (this->LayersDone == 0 && !this->WarmedUp)
   {
-    // Whole cycles, so layer 0 keeps its phase. The virtual layers repeat the
-    // first layer, so each one's successor has the first layer's densities.
-    const int warmUp = 4 * ((this->WarmUpLayers + 3) / 4);
-    std::vector<unsigned char> discarded(this->Current.size());
-    for (int w = 0; w < warmUp; ++w)
-    {
-      this->ScanLayer(density, density, discarded.data(), this->FirstLayer - warmUp + w);
-      std::swap(this->Current, this->Next);
-      std::fill(this->Next.begin(), this->Next.end(), 0.0f);
-    }
-  }
-  // Past the last layer the steady-state mode lets the error leave through an
-  // open layer whose voxels all take error; the paper's keeps it in the layer.
-  const float* next = nextDensity;
-  if (this->LayersDone + 1 >= this->NZ)
-  {
-    next = nullptr;
-    if (steady)
-    {
-      this->OpenLayer.resize(this->Current.size(), 0.5f);
-      next = this->OpenLayer.data();
-    }
+    this->WarmUp(density, this->WarmUpLayers);
   }
   const vtkIdType count =
-    this->ScanLayer(density, next, mask, this->FirstLayer + this->LayersDone);
-  std::swap(this->Current, this->Next);
-  std::fill(this->Next.begin(), this->Next.end(), 0.0f);
-  ++this->LayersDone;
+    this->ScanLayer(density, nextDensity, mask, this->FirstLayer + this->LayersDone);
+  this->EndLayer();
   return count;
+}
+
+//------------------------------------------------------------------------------
+double vtkErrorDiffusionKernel::GetCarriedError() const
+{
+  double sum = this->Carry;
+  for (float e : this->Current)
+  {
+    sum += e;
+  }
+  return sum;
+}
+
+//------------------------------------------------------------------------------
+double vtkErrorDiffusionKernel::MeasureReceivedError(const vtkErrorDiffusionParameterTable& table,
+  double modulationScale, double g, float charge, int seed)
+{
+  const double spacing = std::cbrt(1.0 / g); // mean distance between points, in voxels
+  const int n = static_cast<int>(48.0 + 4.0 * spacing);
+  const int margin = static_cast<int>(std::ceil(1.5 * spacing)) + 2;
+  const int settle = 4 * static_cast<int>(std::ceil(2.0 * spacing + 8.0));
+  const int measured = settle;
+  vtkErrorDiffusionKernel probe;
+  probe.SetParameters(table);
+  probe.SetModulationScale(modulationScale);
+  probe.SetSeed(static_cast<std::uint64_t>(seed));
+  probe.FixedCharge = charge;
+  probe.SetWarmUpLayers(0);
+  probe.Begin(n, n);
+  const std::vector<float> density(static_cast<size_t>(n) * n, static_cast<float>(g));
+  std::vector<unsigned char> mask(density.size());
+  double sum = 0.0;
+  long count = 0;
+  for (int layer = 0; layer < settle + measured; ++layer)
+  {
+    probe.ScanLayer<true>(density.data(), density.data(), mask.data(), layer);
+    if (layer >= settle)
+    {
+      for (int y = margin; y < n - margin; ++y)
+      {
+        for (int x = margin; x < n - margin; ++x)
+        {
+          sum += probe.Current[x + static_cast<size_t>(n) * y];
+          ++count;
+        }
+      }
+    }
+    probe.EndLayer();
+  }
+  return sum / static_cast<double>(count);
 }
 
 //------------------------------------------------------------------------------
@@ -313,31 +367,103 @@ bool AllActive(const float* g, size_t n)
 }
 
 //------------------------------------------------------------------------------
-// Real volumes change g from voxel to voxel but hold few distinct values (an
-// 8-bit MRI has at most 256): a small direct-mapped cache keyed by the bits
-// of g spares most table interpolations, which cost several times the rest
-// of a voxel's work.
-const vtkErrorDiffusionKernel::LevelParameters& vtkErrorDiffusionKernel::ParametersOf(float g)
+namespace
 {
-  std::uint32_t bits = 0;
-  std::memcpy(&bits, &g, sizeof(bits));
-  LevelParameters& entry = this->ParameterCache[(bits * 2654435761u) >> 24];
-  if (entry.G != g)
+// The layer's reservoir: error that would go below a bottom face (a voxel
+// whose targets in the next layer are all inactive or missing) is shared by
+// the active voxels still to come in the layer, each getting share / count
+// of the voxels left at the time. Concentrating it on the voxel's own targets
+// in the layer instead makes the last layer of a support fire ahead of its
+// mass at low densities (the translated threshold is low): about 7 points too
+// many on a 256^2 layer at g = 0.01.
+struct Reservoir
+{
+  float Received = 0.0f; // what each of the active voxels to come receives
+  vtkIdType Remaining = 0; // active voxels left in the layer after the current one
+
+  // Gives `share` to the voxels to come; false when there are none.
+  bool Take(float share)
   {
-    const auto params = this->Table.Evaluate(g);
-    std::copy(params.Weights.begin(), params.Weights.end(), entry.Weights);
-    const float charge = this->ChargeAt(g);
-    entry.Base = g <= 0.5f ? 0.5f - charge : 0.5f + charge;
-    const float scale = static_cast<float>(this->ModulationScale);
-    entry.Modulation = (g <= 0.5f ? scale : -scale) * params.Modulation;
-    entry.G = g;
+    if (this->Remaining == 0)
+    {
+      return false;
+    }
+    this->Received += share / static_cast<float>(this->Remaining);
+    return true;
   }
-  return entry;
+};
+
+vtkIdType CountActive(const float* g, size_t n)
+{
+  vtkIdType count = 0;
+  for (size_t i = 0; i < n; ++i)
+  {
+    count += Active(g[i]) ? 1 : 0;
+  }
+  return count;
+}
+}
+
+//------------------------------------------------------------------------------
+// The error e of voxel idx at a face of the volume or of the support: the
+// targets that exist and are active share it in proportion to their weights,
+// except that a share for the next layer with no active target there goes to
+// the reservoir. Returns the new carry (the share of the next voxel scanned).
+float vtkErrorDiffusionKernel::SpreadAtFace(float e, const float w[6], const bool valid[6],
+  vtkIdType idx, vtkIdType d, vtkIdType v, void* reservoirPointer)
+{
+  auto& reservoir = *static_cast<Reservoir*>(reservoirPointer);
+  float* cur = this->Current.data();
+  float* nxt = this->Next.data();
+  const float below = w[TARGET_Z_BACKV] + w[TARGET_Z_BACKU] + w[TARGET_Z];
+  const bool anyBelow = valid[TARGET_Z_BACKV] || valid[TARGET_Z_BACKU] || valid[TARGET_Z];
+  float local = e; // what the local targets share
+  if (!anyBelow && below > 0.0f && reservoir.Take(e * below))
+  {
+    local = e * (1.0f - below);
+  }
+  const bool* targets = valid;
+  const bool inLayerOnly[6] = { valid[0], valid[1], valid[2], false, false, false };
+  if (local != e)
+  {
+    targets = inLayerOnly;
+  }
+  float sum = 0.0f;
+  for (int t = 0; t < 6; ++t)
+  {
+    sum += targets[t] ? w[t] : 0.0f;
+  }
+  if (!(sum > 0.0f))
+  {
+    return local; // no active target: on to the next voxel scanned
+  }
+  const float f = local / sum;
+  if (targets[TARGET_BACK_V])
+  {
+    cur[idx - d + v] += f * w[TARGET_BACK_V];
+  }
+  if (targets[TARGET_V])
+  {
+    cur[idx + v] += f * w[TARGET_V];
+  }
+  if (targets[TARGET_Z_BACKV])
+  {
+    nxt[idx - v] += f * w[TARGET_Z_BACKV];
+  }
+  if (targets[TARGET_Z_BACKU])
+  {
+    nxt[idx - d] += f * w[TARGET_Z_BACKU];
+  }
+  if (targets[TARGET_Z])
+  {
+    nxt[idx] += f * w[TARGET_Z];
+  }
+  return targets[TARGET_U] ? f * w[TARGET_U] : 0.0f;
 }
 
 //------------------------------------------------------------------------------
 // The scan of one layer. Record keeps what each voxel received (for
-// GetSteadyStateCharges) and costs a store per voxel, so it is a template
+// MeasureReceivedError) and costs a store per voxel, so it is a template
 // flag. Rows away from the faces of a layer whose voxels and successors are
 // all active take a path without any test on the targets: that is the bulk
 // of the work on any large support, and the tests cost a third of the time.
@@ -349,15 +475,8 @@ vtkIdType vtkErrorDiffusionKernel::ScanLayer(
   const size_t layerSize = static_cast<size_t>(this->NX) * this->NY;
   // A layer is tested once, as the successor, and the answer reused when it
   // comes up as the current layer (the caller passes the same densities).
-  bool currentActive = false;
-  if (density == this->TestedLayer)
-  {
-    currentActive = this->TestedLayerActive;
-  }
-  else
-  {
-    currentActive = AllActive(density, layerSize);
-  }
+  const bool currentActive =
+    density == this->TestedLayer ? this->TestedLayerActive : AllActive(density, layerSize);
   bool nextActive = false;
   if (nextLayerExists)
   {
@@ -366,11 +485,20 @@ vtkIdType vtkErrorDiffusionKernel::ScanLayer(
     this->TestedLayerActive = nextActive;
   }
   const bool allActive = currentActive && nextActive;
+  Reservoir reservoir;
+  if (!allActive)
+  {
+    reservoir.Remaining = currentActive ? static_cast<vtkIdType>(layerSize) : CountActive(density, layerSize);
+  }
   const LayerScan s = GetLayerScan(this->NX, this->NY, layer);
   float* cur = this->Current.data();
   float* nxt = this->Next.data();
   const vtkIdType V = s.VStride;
 
+  // The share for the next voxel of the scan stays in a register: it is the
+  // only dependency from one voxel to the next. It also carries, to the next
+  // active voxel of the scan, error that has no active target.
+  float carry = this->Carry;
   float cachedG = -1.0f;
   float w[6] = { 0, 0, 0, 0, 0, 0 };
   float base = 0.5f;       // 0.5 - C(g) below g = 0.5, 0.5 + C(1 - g) above
@@ -384,11 +512,7 @@ vtkIdType vtkErrorDiffusionKernel::ScanLayer(
     vtkIdType idx = s.Start + q * V + (oddRow ? (s.NU - 1) * s.UStride : 0);
     const bool hasPrevRow = q > 0;
     const bool hasNextRow = q + 1 < s.NV;
-    const bool fullRow = hasPrevRow && hasNextRow && nextLayerExists;
-    const bool fastRow = fullRow && allActive;
-    // The share for the next voxel of the row stays in a register: it is the
-    // only dependency from one voxel to the next.
-    float carry = 0.0f;
+    const bool fastRow = hasPrevRow && hasNextRow && allActive;
     for (int p = 0; p < s.NU; ++p, idx += d)
     {
       const float g = density[idx];
@@ -400,18 +524,18 @@ vtkIdType vtkErrorDiffusionKernel::ScanLayer(
         const unsigned char b = g >= 1.0f ? 1 : 0;
         mask[idx] = b;
         count += b;
-        carry = 0.0f;
         continue;
       }
       if (g != cachedG)
       {
-        const LevelParameters& p = this->ParametersOf(g);
-        std::copy(p.Weights, p.Weights + 6, w);
-        base = p.Base;
-        modulation = p.Modulation;
+        const LevelParameters lp = this->ParametersOf(g);
+        std::copy(lp.Weights, lp.Weights + 6, w);
+        base = lp.Base;
+        modulation = lp.Modulation;
         cachedG = g;
       }
-      const float value = (g + cur[idx]) + carry; // g + cur[idx] is off the critical path
+      // g + cur[idx] (+ the reservoir) is off the critical path.
+      const float value = (g + cur[idx] + reservoir.Received) + carry;
       if (Record)
       {
         cur[idx] = value - g;
@@ -423,7 +547,6 @@ vtkIdType vtkErrorDiffusionKernel::ScanLayer(
       mask[idx] = b;
       count += b;
       const float e = value - static_cast<float>(b);
-
       if (fast)
       {
         // value * w - b * w: the product does not wait for the comparison.
@@ -436,51 +559,16 @@ vtkIdType vtkErrorDiffusionKernel::ScanLayer(
         nxt[idx] += e * w[TARGET_Z];
         continue;
       }
-      // A face of the volume or of the support (saturated voxels around): the
-      // targets that exist and are active share the error in proportion to
-      // their weights.
+      --reservoir.Remaining;
       const bool valid[6] = { hasNextU && Active(density[idx + d]),
         hasPrevU && hasNextRow && Active(density[idx - d + V]),
         hasNextRow && Active(density[idx + V]),
         hasPrevRow && nextLayerExists && Active(next[idx - V]),
         hasPrevU && nextLayerExists && Active(next[idx - d]),
         nextLayerExists && Active(next[idx]) };
-      float sum = 0.0f;
-      for (int t = 0; t < 6; ++t)
-      {
-        sum += valid[t] ? w[t] : 0.0f;
-      }
-      carry = 0.0f;
-      if (!(sum > 0.0f))
-      {
-        continue; // no active target: the error has nowhere to go
-      }
-      const float f = e / sum;
-      if (valid[TARGET_U])
-      {
-        carry = f * w[TARGET_U];
-      }
-      if (valid[TARGET_BACK_V])
-      {
-        cur[idx - d + V] += f * w[TARGET_BACK_V];
-      }
-      if (valid[TARGET_V])
-      {
-        cur[idx + V] += f * w[TARGET_V];
-      }
-      if (valid[TARGET_Z_BACKV])
-      {
-        nxt[idx - V] += f * w[TARGET_Z_BACKV];
-      }
-      if (valid[TARGET_Z_BACKU])
-      {
-        nxt[idx - d] += f * w[TARGET_Z_BACKU];
-      }
-      if (valid[TARGET_Z])
-      {
-        nxt[idx] += f * w[TARGET_Z];
-      }
+      carry = this->SpreadAtFace(e, w, valid, idx, d, V, &reservoir);
     }
   }
+  this->Carry = carry;
   return count;
 }

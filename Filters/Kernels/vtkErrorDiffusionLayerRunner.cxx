@@ -68,21 +68,29 @@ vtkIdType vtkErrorDiffusionLayerRunner::ScanLayer(vtkErrorDiffusionKernel& kerne
     this->Fill(0, this->DensitySlot(0));
   }
   const float* next = nullptr;
-  if (k + 1 < nz)
+  if (k + 1 < nz || this->LastHasNext)
   {
     this->Fill(k + 1, this->DensitySlot(k + 1));
     next = this->DensitySlot(k + 1);
   }
-  unsigned char* mask = this->MaskStorage
-    ? this->MaskStorage(k)
-    : this->Masks + static_cast<size_t>(k % this->Slots) * this->LayerSize;
+  unsigned char* mask = this->MaskStorage ? this->MaskStorage(k) : nullptr;
+  if (!mask)
+  {
+    mask = this->Masks + static_cast<size_t>(k % this->Slots) * this->LayerSize;
+  }
   this->LayerMasks[k % this->Slots] = mask; // published to the consumer with the count
+  if (this->BeforeScan)
+  {
+    this->BeforeScan(k, this->DensitySlot(k));
+  }
   return kernel.ProcessLayer(this->DensitySlot(k), next, mask);
 }
 
 //------------------------------------------------------------------------------
-bool vtkErrorDiffusionLayerRunner::Run(vtkErrorDiffusionKernel& kernel, int nx, int ny, int nz)
+bool vtkErrorDiffusionLayerRunner::Run(
+  vtkErrorDiffusionKernel& kernel, int nx, int ny, int nz, bool lastHasNext)
 {
+  this->LastHasNext = lastHasNext;
   this->Error.clear();
   if (!this->Fill || !this->Consume)
   {
@@ -106,10 +114,7 @@ bool vtkErrorDiffusionLayerRunner::Run(vtkErrorDiffusionKernel& kernel, int nx, 
   try
   {
     densities.resize(this->Slots * this->LayerSize);
-    if (!this->MaskStorage)
-    {
-      masks.resize(this->Slots * this->LayerSize);
-    }
+    masks.resize(this->Slots * this->LayerSize);
   }
   catch (const std::exception& e)
   {

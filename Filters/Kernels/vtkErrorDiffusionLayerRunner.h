@@ -15,7 +15,8 @@
  * Per layer k (0-based in the run) the runner asks Fill(k, density) for the
  * densities, keeping one layer ahead because the kernel needs the next
  * layer's densities, lets the kernel sample layer k into the layer's mask
- * (a buffer of the runner's own, or the one MaskStorage(k) returns), then
+ * (the buffer MaskStorage(k) returns, or one of the runner's own when it
+ * returns nullptr or is not set), then
  * calls Consume with the layer's densities, mask and count. The buffers of a
  * layer stay valid until Consume returns. After the last layer Finish(total)
  * runs on the scan thread (it may start before the consumer has caught up),
@@ -25,7 +26,7 @@
  * the same order either way. Memory: four layers of densities and masks when
  * threaded, two when not.
  *
- * Fill, MaskStorage and Finish run on the scan thread; they must not touch
+ * Fill, MaskStorage, BeforeScan and Finish run on the scan thread; they must not touch
  * what Consume touches. An exception thrown by any callback stops the run;
  * Run then returns false and GetError() says what was thrown.
  */
@@ -57,21 +58,26 @@ public:
   using MaskFunction = std::function<unsigned char*(int layer)>;
   using ConsumeFunction = std::function<bool(const Layer& layer)>; ///< false stops the run
   using FinishFunction = std::function<void(vtkIdType samples)>;
+  using BeforeScanFunction = std::function<void(int layer, const float* density)>;
 
   void SetFill(FillFunction f) { this->Fill = std::move(f); }
   void SetMaskStorage(MaskFunction f) { this->MaskStorage = std::move(f); }
   void SetConsume(ConsumeFunction f) { this->Consume = std::move(f); }
   void SetFinish(FinishFunction f) { this->Finish = std::move(f); }
+  /// Called on the scan thread just before layer k is scanned (optional).
+  void SetBeforeScan(BeforeScanFunction f) { this->BeforeScan = std::move(f); }
   void SetThreaded(bool threaded) { this->Threaded = threaded; }
   bool GetThreaded() const { return this->Threaded; }
 
   /**
    * Samples nz layers of nx * ny voxels with a kernel on which Begin() was
-   * called for that shape. Fill and Consume are required. Returns true when
-   * every layer was consumed and Finish ran; false when Consume stopped the
-   * run or a callback threw (see GetError()).
+   * called for that shape (it may have sampled layers before: a run can be
+   * one slab of a volume). The last layer's successor is layer nz (filled
+   * with Fill) when lastHasNext, none otherwise. Fill and Consume are
+   * required. Returns true when every layer was consumed and Finish ran;
+   * false when Consume stopped the run or a callback threw (see GetError()).
    */
-  bool Run(vtkErrorDiffusionKernel& kernel, int nx, int ny, int nz);
+  bool Run(vtkErrorDiffusionKernel& kernel, int nx, int ny, int nz, bool lastHasNext = false);
 
   /// Why the last Run failed; empty when it did not, or when Consume stopped it.
   const std::string& GetError() const { return this->Error; }
@@ -87,7 +93,9 @@ private:
   MaskFunction MaskStorage;
   ConsumeFunction Consume;
   FinishFunction Finish;
+  BeforeScanFunction BeforeScan;
   bool Threaded = false;
+  bool LastHasNext = false;
   std::string Error;
 
   // The ring of layer buffers of one Run.

@@ -52,13 +52,12 @@ bool Measure(const vtkErrorDiffusionParameterTable& table, double level,
     vtkErrorDiffusionKernel kernel;
     kernel.SetParameters(table);
     kernel.SetModulationScale(settings.ModulationScale);
-    kernel.SetBoundaryMode(settings.BoundaryMode);
     kernel.SetWarmUpLayers(settings.WarmUpLayers);
     kernel.SetSeed(static_cast<std::uint64_t>(settings.FirstSeed + s));
-    kernel.Begin(n, n, n);
+    kernel.Begin(n, n);
     for (int z = 0; z < n; ++z)
     {
-      kernel.ProcessLayer(density.data(), density.data(), mask.data() + z * layer); // constant density
+      kernel.ProcessLayer(density.data(), z + 1 < n ? density.data() : nullptr, mask.data() + z * layer);
     }
     if (!whole.AddRealisation(mask.data(), error))
     {

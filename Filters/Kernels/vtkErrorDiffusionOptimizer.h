@@ -42,7 +42,6 @@ public:
     int MaximumEvaluations = 400;
     double Tolerance = 1e-6;  ///< relative spread of T over the simplex
     double ModulationScale = 0.5;
-    int BoundaryMode = 1;     ///< vtkErrorDiffusionKernel::BoundaryModes
     int WarmUpLayers = 8;
     int CropFaces = 8;        ///< for the interior figures of Evaluate()
   };

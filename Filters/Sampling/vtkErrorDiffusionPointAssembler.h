@@ -2,24 +2,37 @@
 // SPDX-License-Identifier: BSD-3-Clause
 /**
  * @class   vtkErrorDiffusionPointAssembler
- * @brief   Builds the sampler's output points, layer by layer, from the
- *          sample masks of an image's layers.
+ * @brief   Builds a sampler's output points, layer by layer, from the sample
+ *          masks of an image's layers.
  *
  * For the samples of each layer (the voxels whose mask is 1) it appends the
- * voxel centre in world coordinates (the image's origin, spacing and
- * direction matrix), the density the sample was drawn with (float array
- * `Density`) and the tuple of every point-data array of the image (numeric
- * arrays through vtkArrayDispatch, others tuple by tuple). The arrays reserve
- * room for up to 2^22 points up front, grow beyond that (VTK's Resize,
- * amortised) and are trimmed to size by End(). Large arrays with the standard
- * memory layout are allocated 2 MB aligned and, on Linux, advised for
- * transparent huge pages: the output is written once, in order, and most of
- * the cost of fresh memory is the page faults (a quarter of the filter's time
- * with 4 kB pages at g = 0.5).
+ * voxel center in world coordinates (the image's origin, spacing and
+ * direction matrix), optionally moved by a jitter, the density the sample was
+ * drawn with (float array `Density`) and the tuple of every point-data array
+ * of the image (numeric arrays through vtkArrayDispatch, others tuple by
+ * tuple).
+ *
+ * Jitter: with SetJitter(true, seed) each point moves from its voxel center
+ * by an offset uniform in [-0.5, 0.5) voxel along each index axis, a hash of
+ * the seed and the voxel's global (i, j, k) index: the same voxel gets the
+ * same offset whatever the slab, piece or thread that samples it. The point
+ * stays inside its voxel, so binning it to the nearest grid point (as
+ * vtkBlueNoiseSpectrum does) recovers the voxel.
+ *
+ * The image may come in slabs (streaming): SetSource() gives the image that
+ * holds the next layers; its extent may exceed the layers sampled from it.
+ * Every slab must have the arrays the first one had (same names, types and
+ * components). Arrays whose number of tuples is not the image's number of
+ * points are not carried (GetSkippedArrays()).
+ *
+ * Memory: the output arrays reserve one point per voxel of the sampled extent
+ * (up to 2^28) up front, so they never grow by copying; only what is written
+ * is committed (large arrays are 2 MB aligned and, on Linux, advised for
+ * transparent huge pages: most of the cost of fresh memory is page faults),
+ * and End() trims them to size.
  *
  * Layers must come in z order, each once. The image and its arrays are only
- * read, so another thread may read them at the same time (the sampler scans
- * the next layers meanwhile).
+ * read, so another thread may read them at the same time.
  */
 #ifndef vtkErrorDiffusionPointAssembler_h
 #define vtkErrorDiffusionPointAssembler_h
@@ -28,6 +41,9 @@
 #include "vtkSmartPointer.h"           // for members
 #include "vtkType.h"                   // for vtkIdType
 
+#include <array>
+#include <cstdint>
+#include <string>
 #include <vector>
 
 class vtkAbstractArray;
@@ -47,21 +63,38 @@ public:
   vtkErrorDiffusionPointAssembler& operator=(const vtkErrorDiffusionPointAssembler&) = delete;
 
   /**
-   * Starts the points of `image`. outPD receives (CopyAllocate) every array
-   * of the image's point data, except one named `Density`, which End()
-   * replaces by the densities. pointsType: VTK_FLOAT or VTK_DOUBLE.
+   * Starts the points of the layers of `extent` (x and y must be the image's
+   * full x and y extent). `image` gives the geometry and the arrays; outPD
+   * receives (CopyAllocate) every array of the image's point data with one
+   * tuple per voxel, except one named `Density`, which End() replaces by the
+   * densities. pointsType: VTK_FLOAT or VTK_DOUBLE.
    */
-  void Begin(vtkImageData* image, vtkPointData* outPD, int pointsType);
+  void Begin(vtkImageData* image, const int extent[6], vtkPointData* outPD, int pointsType);
+
+  /// Jitter the points (see the class comment). Call after Begin.
+  void SetJitter(bool jitter, std::uint64_t seed);
 
   /**
-   * Appends the samples of layer k (0-based from the bottom of the image's
-   * extent): density and mask hold nx * ny values, x fastest; count is the
-   * number of ones in mask.
+   * The image the next layers are read from (the one given to Begin until
+   * this is called). Returns false, with the reason, when its arrays do not
+   * match the first image's.
    */
-  void AddLayer(int k, const float* density, const unsigned char* mask, vtkIdType count);
+  bool SetSource(vtkImageData* image, std::string& error);
+
+  /**
+   * Appends the samples of global layer z: density and mask hold one value
+   * per voxel of the layer, x fastest; count is the number of ones in mask.
+   */
+  void AddLayer(int z, const float* density, const unsigned char* mask, vtkIdType count);
 
   /// Points appended so far.
   vtkIdType GetNumberOfPoints() const { return this->Total; }
+
+  /// Drops the last n points appended; returns their voxels' (i, j, k).
+  std::vector<std::array<int, 3>> RemoveLast(vtkIdType n);
+
+  /// Names of the image arrays that were not carried (wrong number of tuples).
+  const std::vector<std::string>& GetSkippedArrays() const { return this->Skipped; }
 
   /**
    * Trims the arrays to the number of points, adds `Density` to the point
@@ -77,18 +110,25 @@ public:
 
 private:
   void Reserve(vtkIdType tuples);
+  vtkIdType CompactLayer(const unsigned char* mask);
+  void WriteCoordinates(int z, vtkIdType first);
+  void CopyAttributes(int z, vtkIdType first, vtkIdType n);
 
-  int Extent[6] = { 0, -1, 0, -1, 0, -1 };
+  int Extent[6] = { 0, -1, 0, -1, 0, -1 };       // sampled
+  int SourceExtent[6] = { 0, -1, 0, -1, 0, -1 }; // of the image the arrays come from
   double IndexToPhysical[16];
+  bool Jitter = false;
+  std::uint64_t JitterSeed = 0;
   vtkIdType Total = 0;
-  vtkIdType Capacity = 0;
   vtkPointData* OutputPointData = nullptr;
   vtkSmartPointer<vtkDataArray> Coordinates;
   vtkSmartPointer<vtkFloatArray> Densities;
   std::vector<vtkAbstractArray*> Sources; // image arrays, read at the sampled voxels
   std::vector<vtkAbstractArray*> Targets; // their copies in the output
-  std::vector<vtkIdType> LayerIds;        // in-layer indices of one layer's samples
-  std::vector<vtkIdType> RowEnds;         // where each row's samples end in LayerIds
+  std::vector<int> SourceIndices;         // where each source is in the image's point data
+  std::vector<std::string> Skipped;
+  std::vector<vtkIdType> LayerIds; // in-layer indices of one layer's samples
+  std::vector<vtkIdType> RowEnds;  // where each row's samples end in LayerIds
 };
 
 #endif

@@ -2,187 +2,71 @@
 // SPDX-License-Identifier: BSD-3-Clause
 #include "vtkErrorDiffusionSampler.h"
 
-#include "vtkArrayDispatch.h"
 #include "vtkCellArray.h"
-#include "vtkDataArrayRange.h"
 #include "vtkDoubleArray.h"
-#include "vtkErrorDiffusionKernel.h"
 #include "vtkErrorDiffusionLayerRunner.h"
-#include "vtkErrorDiffusionPointAssembler.h"
 #include "vtkErrorDiffusionParameterTable.h"
+#include "vtkErrorDiffusionPointAssembler.h"
 #include "vtkFieldData.h"
-#include "vtkFloatArray.h"
 #include "vtkImageData.h"
 #include "vtkInformation.h"
 #include "vtkInformationVector.h"
 #include "vtkIntArray.h"
 #include "vtkMatrix3x3.h"
-#include "vtkMultiProcessController.h"
-#include "vtkCommunicator.h"
 #include "vtkObjectFactory.h"
 #include "vtkPiecewiseFunction.h"
 #include "vtkPointData.h"
 #include "vtkPoints.h"
 #include "vtkPolyData.h"
+#include "vtkSMPTools.h"
+#include "vtkSamplingBudget.h"
 #include "vtkStreamingDemandDrivenPipeline.h"
 #include "vtkUnsignedCharArray.h"
 #include "vtkVersionMacros.h"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
-#include <limits>
-#include <numeric>
-#include <thread>
-#include <type_traits>
+#include <sstream>
 #include <vector>
 
 vtkStandardNewMacro(vtkErrorDiffusionSampler);
 vtkCxxSetObjectMacro(vtkErrorDiffusionSampler, TransferFunction, vtkPiecewiseFunction);
-vtkCxxSetObjectMacro(vtkErrorDiffusionSampler, Controller, vtkMultiProcessController);
 
 namespace
 {
-// The mapping used for a scalar range of zero width.
-constexpr int DENSITY_STEP = -1;
-
 // Below this a second thread costs more than it saves.
-constexpr vtkIdType MIN_VOXELS_FOR_WORKER_THREAD = 32768;
+constexpr vtkIdType MinimumVoxelsForWorkerThread = 32768;
 
-// Array value -> density in [0, 1].
-struct DensityMap
+// Layers [first, last] split into `parts` contiguous ranges, as even as can be.
+std::vector<std::array<int, 2>> SplitLayers(int first, int last, int parts)
 {
-  int Mode = vtkErrorDiffusionSampler::DENSITY_IDENTITY;
-  double Low = 0.0;
-  double InverseWidth = 1.0;
-  double Scale = 1.0;
-  vtkPiecewiseFunction* Function = nullptr;
-
-  float operator()(double x) const
+  std::vector<std::array<int, 2>> ranges;
+  const long long count = static_cast<long long>(last) - first + 1;
+  if (count <= 0)
   {
-    double g = x;
-    if (this->Mode == vtkErrorDiffusionSampler::DENSITY_SCALAR_RANGE)
-    {
-      g = (x - this->Low) * this->InverseWidth;
-    }
-    else if (this->Mode == DENSITY_STEP)
-    {
-      g = x >= this->Low ? 1.0 : 0.0;
-    }
-    else if (this->Mode == vtkErrorDiffusionSampler::DENSITY_TRANSFER_FUNCTION)
-    {
-      g = std::isnan(x) ? 0.0 : this->Function->GetValue(x);
-    }
-    g *= this->Scale;
-    if (!(g > 0.0)) // NaN too
-    {
-      return 0.0f;
-    }
-    return g >= 1.0 ? 1.0f : static_cast<float>(g);
+    return ranges;
   }
-};
-
-// Densities of the tuples [begin, end) of the array, in order.
-struct LayerDensityWorker
-{
-  template <typename ArrayT>
-  void operator()(ArrayT* array, vtkIdType begin, vtkIdType end, int component,
-    const DensityMap& map, float* out) const
+  parts = static_cast<int>(std::min<long long>(std::max(parts, 1), count));
+  for (int p = 0; p < parts; ++p)
   {
-    const auto tuples = vtk::DataArrayTupleRange(array, begin, end);
-    if (component >= 0)
-    {
-      for (const auto tuple : tuples)
-      {
-        *out++ = map(static_cast<double>(tuple[component]));
-      }
-      return;
-    }
-    for (const auto tuple : tuples)
-    {
-      double sum = 0.0;
-      for (const auto c : tuple)
-      {
-        sum += static_cast<double>(c) * static_cast<double>(c);
-      }
-      *out++ = map(std::sqrt(sum));
-    }
+    const int begin = first + static_cast<int>(count * p / parts);
+    const int end = first + static_cast<int>(count * (p + 1) / parts) - 1;
+    ranges.push_back({ begin, end });
   }
-};
-
-void FillLayerDensity(vtkDataArray* array, vtkIdType begin, vtkIdType end, int component,
-  const DensityMap& map, float* out)
-{
-  LayerDensityWorker worker;
-  if (!vtkArrayDispatch::Dispatch::Execute(array, worker, begin, end, component, map, out))
-  {
-    worker(array, begin, end, component, map, out);
-  }
+  return ranges;
 }
 
-// The finite range of a component (or, for -1, of the tuple magnitude):
-// VTK's GetFiniteRange is not cached across executions and walks the values
-// through a generic path, a third of the filter's time on an 8-bit MRI.
-// lo > hi when no value is finite.
-struct FiniteRangeWorker
+bool Contains(const int outer[6], const int inner[6])
 {
-  template <typename ArrayT>
-  void operator()(ArrayT* array, int component, double& lo, double& hi) const
+  for (int a = 0; a < 3; ++a)
   {
-    lo = std::numeric_limits<double>::infinity();
-    hi = -lo;
-    if (component < 0)
+    if (inner[2 * a] < outer[2 * a] || inner[2 * a + 1] > outer[2 * a + 1])
     {
-      for (const auto tuple : vtk::DataArrayTupleRange(array))
-      {
-        double sum = 0.0;
-        for (const auto c : tuple)
-        {
-          sum += static_cast<double>(c) * static_cast<double>(c);
-        }
-        const double m = std::sqrt(sum);
-        if (std::isfinite(m))
-        {
-          lo = std::min(lo, m);
-          hi = std::max(hi, m);
-        }
-      }
-      return;
-    }
-    // The component's values, a stride apart; in the array's own type so the
-    // loop stays cheap.
-    using T = vtk::GetAPIType<ArrayT>;
-    const auto values = vtk::DataArrayValueRange(array);
-    const vtkIdType n = values.size();
-    const int nc = array->GetNumberOfComponents();
-    T low = std::numeric_limits<T>::max();
-    T high = std::numeric_limits<T>::lowest();
-    bool any = false;
-    for (vtkIdType i = component; i < n; i += nc)
-    {
-      const T v = values[i];
-      if (std::is_floating_point<T>::value && !std::isfinite(static_cast<double>(v)))
-      {
-        continue;
-      }
-      low = v < low ? v : low;
-      high = v > high ? v : high;
-      any = true;
-    }
-    if (any)
-    {
-      lo = static_cast<double>(low);
-      hi = static_cast<double>(high);
+      return false;
     }
   }
-};
-
-void ComputeFiniteRange(vtkDataArray* array, int component, double range[2])
-{
-  FiniteRangeWorker worker;
-  if (!vtkArrayDispatch::Dispatch::Execute(array, worker, component, range[0], range[1]))
-  {
-    worker(array, component, range[0], range[1]);
-  }
+  return true;
 }
 
 void AddFieldArray(vtkFieldData* fd, vtkDataArray* array, const char* name, int components)
@@ -192,22 +76,104 @@ void AddFieldArray(vtkFieldData* fd, vtkDataArray* array, const char* name, int 
   array->SetNumberOfTuples(1);
   fd->AddArray(array);
 }
+
+// The parameter table of a ParameterSet; false with the reason for a bad file.
+bool SelectTable(
+  int set, const std::string& file, vtkErrorDiffusionParameterTable& table, std::string& error)
+{
+  switch (set)
+  {
+    case vtkErrorDiffusionSampler::PARAMETERS_FIXED:
+      table = vtkErrorDiffusionParameterTable::Fixed();
+      return true;
+    case vtkErrorDiffusionSampler::PARAMETERS_OPTIMIZED:
+      table = vtkErrorDiffusionParameterTable::Optimized();
+      return true;
+    case vtkErrorDiffusionSampler::PARAMETERS_CUSTOM:
+      if (file.empty())
+      {
+        error = "ParameterSet is Custom but no ParameterFile is set.";
+        return false;
+      }
+      if (!vtkErrorDiffusionParameterTable::ReadFile(file, table, error))
+      {
+        error = "Cannot use the parameter file: " + error;
+        return false;
+      }
+      return true;
+    default:
+      table = vtkErrorDiffusionParameterTable::Paper();
+      return true;
+  }
+}
 }
 
 //------------------------------------------------------------------------------
+// The state of one run: its plan (which layers each step reads) and what is
+// carried from one step (one execution of a streamed run) to the next.
+class vtkErrorDiffusionSampler::vtkInternals
+{
+public:
+  struct Step
+  {
+    bool Statistics = false;
+    int First = 0; // layers of the step
+    int Last = -1;
+  };
+
+  // The plan, made in RequestUpdateExtent before the first execution.
+  int Whole[6] = { 0, -1, 0, -1, 0, -1 };
+  int Sampled[6] = { 0, -1, 0, -1, 0, -1 }; // the piece: full layers
+  int ScanFirst = 0;                        // first layer scanned (overlap included)
+  bool Piece = false;                       // one piece of several
+  std::vector<Step> Steps;
+  size_t Current = 0;
+  bool Running = false;
+
+  // The run.
+  vtkSamplingDensity Density;
+  vtkSamplingBudget Statistics;
+  vtkErrorDiffusionKernel Kernel;
+  vtkErrorDiffusionPointAssembler Assembler;
+  vtkSmartPointer<vtkPolyData> Points;
+  vtkSmartPointer<vtkUnsignedCharArray> Mask;
+  std::vector<double> LayerSums; // expected points per sampled layer
+  bool AssemblerStarted = false;
+  double ProgressTotal = 1.0;
+  double ProgressDone = 0.0;
+
+  int NX() const { return this->Whole[1] - this->Whole[0] + 1; }
+  int NY() const { return this->Whole[3] - this->Whole[2] + 1; }
+  vtkIdType LayerSize() const { return static_cast<vtkIdType>(this->NX()) * this->NY(); }
+  int SampledLayers() const { return std::max(0, this->Sampled[5] - this->Sampled[4] + 1); }
+
+  // The input extent a step needs: full layers, and the layer after a
+  // sampling step's last one when the scan goes on past it.
+  void StepExtent(const Step& step, int extent[6]) const
+  {
+    std::copy(this->Whole, this->Whole + 4, extent);
+    extent[4] = step.First;
+    extent[5] = step.Last;
+    if (!step.Statistics && step.Last < this->Sampled[5])
+    {
+      extent[5] = step.Last + 1;
+    }
+  }
+};
+
+//------------------------------------------------------------------------------
 vtkErrorDiffusionSampler::vtkErrorDiffusionSampler()
+  : Internals(new vtkInternals)
 {
   this->SetNumberOfOutputPorts(2);
   this->SetInputArrayToProcess(
     0, 0, 0, vtkDataObject::FIELD_ASSOCIATION_POINTS, vtkDataSetAttributes::SCALARS);
-  this->SetController(vtkMultiProcessController::GetGlobalController());
 }
 
 //------------------------------------------------------------------------------
 vtkErrorDiffusionSampler::~vtkErrorDiffusionSampler()
 {
   this->SetTransferFunction(nullptr);
-  this->SetController(nullptr);
 }
 
 //------------------------------------------------------------------------------
@@ -245,18 +211,100 @@ int vtkErrorDiffusionSampler::FillOutputPortInformation(int port, vtkInformation
 int vtkErrorDiffusionSampler::RequestInformation(
   vtkInformation*, vtkInformationVector** inputVector, vtkInformationVector* outputVector)
 {
-  // The mask lives on the input's grid.
+  // The mask lives on the input's grid; without it the port announces an
+  // empty extent, which an empty image satisfies: asking for that port never
+  // makes the filter execute again.
   vtkInformation* inInfo = inputVector[0]->GetInformationObject(0);
   vtkInformation* maskInfo = outputVector->GetInformationObject(1);
-  const auto sddp = vtkStreamingDemandDrivenPipeline::WHOLE_EXTENT();
-  if (inInfo->Has(sddp))
+  const auto wholeKey = vtkStreamingDemandDrivenPipeline::WHOLE_EXTENT();
+  const int empty[6] = { 0, -1, 0, -1, 0, -1 };
+  if (this->GenerateMask && inInfo->Has(wholeKey))
   {
-    maskInfo->CopyEntry(inInfo, sddp);
+    maskInfo->CopyEntry(inInfo, wholeKey);
+  }
+  else
+  {
+    maskInfo->Set(wholeKey, empty, 6);
   }
   maskInfo->CopyEntry(inInfo, vtkDataObject::ORIGIN());
   maskInfo->CopyEntry(inInfo, vtkDataObject::SPACING());
   maskInfo->CopyEntry(inInfo, vtkDataObject::DIRECTION());
   vtkDataObject::SetPointDataActiveScalarInfo(maskInfo, VTK_UNSIGNED_CHAR, 1);
+  return 1;
+}
+
+//------------------------------------------------------------------------------
+void vtkErrorDiffusionSampler::GetStatisticsLayers(
+  const int whole[6], int, int, int& first, int& last)
+{
+  first = whole[4];
+  last = whole[5];
+}
+
+//------------------------------------------------------------------------------
+bool vtkErrorDiffusionSampler::ReduceStatistics(vtkSamplingBudget&)
+{
+  return true;
+}
+
+//------------------------------------------------------------------------------
+// The plan of a run: the piece's layers, the overlap above it, and the steps
+// (statistics slabs, then sampling slabs), each one input request.
+int vtkErrorDiffusionSampler::RequestUpdateExtent(
+  vtkInformation*, vtkInformationVector** inputVector, vtkInformationVector* outputVector)
+{
+  vtkInformation* inInfo = inputVector[0]->GetInformationObject(0);
+  vtkInformation* outInfo = outputVector->GetInformationObject(0);
+  vtkInternals& run = *this->Internals;
+  const auto sddp = vtkStreamingDemandDrivenPipeline::UPDATE_EXTENT();
+  if (!run.Running)
+  {
+    inInfo->Get(vtkStreamingDemandDrivenPipeline::WHOLE_EXTENT(), run.Whole);
+    const int piece = outInfo->Has(vtkStreamingDemandDrivenPipeline::UPDATE_PIECE_NUMBER())
+      ? outInfo->Get(vtkStreamingDemandDrivenPipeline::UPDATE_PIECE_NUMBER())
+      : 0;
+    const int pieces = outInfo->Has(vtkStreamingDemandDrivenPipeline::UPDATE_NUMBER_OF_PIECES())
+      ? outInfo->Get(vtkStreamingDemandDrivenPipeline::UPDATE_NUMBER_OF_PIECES())
+      : 1;
+    run.Piece = pieces > 1;
+    std::copy(run.Whole, run.Whole + 6, run.Sampled);
+    const auto parts = SplitLayers(run.Whole[4], run.Whole[5], pieces);
+    const bool emptyPiece = piece >= static_cast<int>(parts.size());
+    run.Sampled[4] = emptyPiece ? 0 : parts[piece][0];
+    run.Sampled[5] = emptyPiece ? -1 : parts[piece][1];
+    run.ScanFirst = std::max(run.Whole[4], run.Sampled[4] - (run.Piece ? this->OverlapLayers : 0));
+    run.Steps.clear();
+    run.Current = 0;
+    vtkSamplingDensity probe;
+    probe.SetMapping(this->DensityMapping, this->Component, this->TransferFunction);
+    if (this->UseCustomScalarRange)
+    {
+      probe.SetRange(this->ScalarRange[0], this->ScalarRange[1]);
+    }
+    if (!emptyPiece && probe.NeedsStatistics(this->UseNumberOfPoints))
+    {
+      int first = 0, last = -1;
+      this->GetStatisticsLayers(run.Whole, piece, pieces, first, last);
+      for (const auto& slab : SplitLayers(first, last, this->NumberOfSlabs))
+      {
+        run.Steps.push_back({ true, slab[0], slab[1] });
+      }
+    }
+    for (const auto& slab : SplitLayers(run.ScanFirst, run.Sampled[5], this->NumberOfSlabs))
+    {
+      run.Steps.push_back({ false, slab[0], slab[1] });
+    }
+  }
+  int extent[6] = { 0, -1, 0, -1, 0, -1 };
+  if (run.Current < run.Steps.size())
+  {
+    run.StepExtent(run.Steps[run.Current], extent);
+  }
+  // The request is the extent alone: the piece is already in it.
+  inInfo->Set(sddp, extent, 6);
+  inInfo->Set(vtkStreamingDemandDrivenPipeline::UPDATE_PIECE_NUMBER(), 0);
+  inInfo->Set(vtkStreamingDemandDrivenPipeline::UPDATE_NUMBER_OF_PIECES(), 1);
+  inInfo->Set(vtkStreamingDemandDrivenPipeline::UPDATE_NUMBER_OF_GHOST_LEVELS(), 0);
   return 1;
 }
 
@@ -268,6 +316,30 @@ bool vtkErrorDiffusionSampler::IsAborted()
 #else
   return this->GetAbortExecute() != 0;
 #endif
+}
+
+//------------------------------------------------------------------------------
+bool vtkErrorDiffusionSampler::ValidateProperties()
+{
+  if (!std::isfinite(this->DensityScale))
+  {
+    vtkErrorMacro("DensityScale must be finite and >= 0, not " << this->DensityScale << ".");
+    return false;
+  }
+  if (!std::isfinite(this->ModulationScale))
+  {
+    vtkErrorMacro("ModulationScale must be finite, in [0, 2], not " << this->ModulationScale << ".");
+    return false;
+  }
+  if (this->DensityMapping == DENSITY_SCALAR_RANGE && this->UseCustomScalarRange &&
+    !(std::isfinite(this->ScalarRange[0]) && std::isfinite(this->ScalarRange[1]) &&
+      this->ScalarRange[1] > this->ScalarRange[0]))
+  {
+    vtkErrorMacro("ScalarRange must be finite with ScalarRange[1] > ScalarRange[0], not ["
+      << this->ScalarRange[0] << ", " << this->ScalarRange[1] << "].");
+    return false;
+  }
+  return true;
 }
 
 //------------------------------------------------------------------------------
@@ -305,11 +377,11 @@ vtkDataArray* vtkErrorDiffusionSampler::GetDensityArray(
                                         << abstractArray->GetClassName() << ").");
     return nullptr;
   }
-  const vtkIdType voxels = input->GetNumberOfPoints();
-  if (array->GetNumberOfTuples() != voxels)
+  if (array->GetNumberOfTuples() != input->GetNumberOfPoints())
   {
-    vtkErrorMacro("The density array has " << array->GetNumberOfTuples() << " tuples for "
-                                           << voxels << " voxels.");
+    vtkErrorMacro("The density array '" << name << "' has " << array->GetNumberOfTuples()
+                                        << " tuples for " << input->GetNumberOfPoints()
+                                        << " voxels.");
     return nullptr;
   }
   if (this->Component >= array->GetNumberOfComponents())
@@ -323,286 +395,386 @@ vtkDataArray* vtkErrorDiffusionSampler::GetDensityArray(
 }
 
 //------------------------------------------------------------------------------
+// Before the first step: check the properties and set the run up.
+bool vtkErrorDiffusionSampler::StartRun(vtkInformation*, vtkInformationVector**)
+{
+  vtkInternals& run = *this->Internals;
+  if (!this->ValidateProperties())
+  {
+    return false;
+  }
+  vtkErrorDiffusionParameterTable table;
+  std::string error;
+  if (this->Method == METHOD_ERROR_DIFFUSION &&
+    !SelectTable(this->ParameterSet, this->ParameterFile, table, error))
+  {
+    vtkErrorMacro(<< error);
+    return false;
+  }
+  const bool function = this->TransferFunction && this->TransferFunction->GetSize() > 0;
+  // A transfer-function mapping without a function ramps over the range.
+  const int mapping = (this->DensityMapping == DENSITY_TRANSFER_FUNCTION && !function)
+    ? DENSITY_SCALAR_RANGE
+    : this->DensityMapping;
+  run.Density.SetMapping(mapping, this->Component, this->TransferFunction);
+  if (mapping == DENSITY_SCALAR_RANGE && this->UseCustomScalarRange)
+  {
+    run.Density.SetRange(this->ScalarRange[0], this->ScalarRange[1]);
+  }
+  run.Statistics.Reset();
+  run.Kernel = vtkErrorDiffusionKernel();
+  run.Kernel.SetParameters(table);
+  run.Kernel.SetModulationScale(this->ModulationScale);
+  run.Kernel.SetSeed(static_cast<std::uint64_t>(this->Seed));
+  run.Kernel.SetMethod(this->Method);
+  run.Kernel.SetWarmUpLayers(this->WarmUpLayers);
+  run.Kernel.Begin(run.NX(), run.NY(), run.ScanFirst);
+  run.Points = vtkSmartPointer<vtkPolyData>::New();
+  run.Mask = nullptr;
+  run.AssemblerStarted = false;
+  run.LayerSums.assign(static_cast<size_t>(run.SampledLayers()), 0.0);
+  run.ProgressDone = 0.0;
+  run.ProgressTotal = 0.0;
+  for (const auto& step : run.Steps)
+  {
+    // Counting values costs about a quarter of sampling them.
+    run.ProgressTotal += (step.Statistics ? 0.25 : 1.0) * (step.Last - step.First + 1);
+  }
+  run.ProgressTotal = std::max(run.ProgressTotal, 1.0);
+  const bool statistics = !run.Steps.empty() && run.Steps.front().Statistics;
+  return statistics || this->FinishStatistics();
+}
+
+//------------------------------------------------------------------------------
+bool vtkErrorDiffusionSampler::CollectStatistics(
+  vtkImageData* input, vtkInformationVector** inputVector)
+{
+  vtkInternals& run = *this->Internals;
+  const vtkInternals::Step& step = run.Steps[run.Current];
+  vtkDataArray* array = this->GetDensityArray(input, inputVector);
+  if (!array)
+  {
+    return false;
+  }
+  int extent[6];
+  input->GetExtent(extent);
+  vtkUnsignedCharArray* ghosts = input->GetPointGhostArray();
+  const vtkIdType layer = run.LayerSize();
+  // A few million values at a time, to report progress and honor abort.
+  const int chunk = static_cast<int>(std::max<vtkIdType>(1, (vtkIdType(1) << 22) / layer));
+  for (int z = step.First; z <= step.Last; z += chunk)
+  {
+    const int last = std::min(step.Last, z + chunk - 1);
+    const vtkIdType begin = (z - extent[4]) * layer;
+    const vtkIdType end = (last - extent[4] + 1) * layer;
+    run.Density.CollectStatistics(
+      array, begin, end, ghosts ? ghosts->GetPointer(0) : nullptr, run.Statistics);
+    run.ProgressDone += 0.25 * (last - z + 1);
+    this->UpdateProgress(run.ProgressDone / run.ProgressTotal);
+    if (this->IsAborted())
+    {
+      return false;
+    }
+  }
+  const bool lastStatistics =
+    run.Current + 1 >= run.Steps.size() || !run.Steps[run.Current + 1].Statistics;
+  return !lastStatistics || this->FinishStatistics();
+}
+
+//------------------------------------------------------------------------------
+// After the statistics (or without them): the range and the density scale.
+bool vtkErrorDiffusionSampler::FinishStatistics()
+{
+  vtkInternals& run = *this->Internals;
+  const bool counted = !run.Steps.empty() && run.Steps.front().Statistics;
+  if (counted && !this->ReduceStatistics(run.Statistics))
+  {
+    return false;
+  }
+  const char* note = nullptr;
+  run.Density.Finish(counted ? &run.Statistics : nullptr, &note);
+  if (note)
+  {
+    vtkWarningMacro("Density: " << note << ".");
+  }
+  if (!this->UseNumberOfPoints)
+  {
+    run.Density.SetScale(this->DensityScale);
+    return true;
+  }
+  const auto solution =
+    run.Statistics.Solve(static_cast<double>(this->NumberOfPoints), run.Density.GetLinearMap());
+  if (solution.OutOfReach)
+  {
+    vtkWarningMacro("NumberOfPoints " << this->NumberOfPoints << " is more than the volume can "
+                                      << "hold: at most " << solution.Reachable
+                                      << " voxels have a positive density, and all are sampled.");
+  }
+  run.Density.SetScale(solution.Scale);
+  return true;
+}
+
+//------------------------------------------------------------------------------
+// One sampling step: the layers of one slab through the kernel, their samples
+// into the output.
+bool vtkErrorDiffusionSampler::SampleSlab(vtkImageData* input, vtkInformationVector** inputVector)
+{
+  vtkInternals& run = *this->Internals;
+  const vtkInternals::Step& step = run.Steps[run.Current];
+  vtkDataArray* array = this->GetDensityArray(input, inputVector);
+  if (!array)
+  {
+    return false;
+  }
+  int extent[6];
+  input->GetExtent(extent);
+  std::string error;
+  if (!run.AssemblerStarted)
+  {
+    run.Assembler.Begin(input, run.Sampled, run.Points->GetPointData(),
+      this->OutputPointsPrecision == DOUBLE_PRECISION ? VTK_DOUBLE : VTK_FLOAT);
+    run.Assembler.SetJitter(this->Jitter, static_cast<std::uint64_t>(this->Seed));
+    for (const std::string& name : run.Assembler.GetSkippedArrays())
+    {
+      vtkWarningMacro("The point array '" << name << "' does not have one tuple per voxel: it is "
+                                          << "not carried to the samples.");
+    }
+    if (this->GenerateMask)
+    {
+      run.Mask = vtkSmartPointer<vtkUnsignedCharArray>::New();
+      run.Mask->SetName("SampleMask");
+      run.Mask->SetNumberOfValues(run.LayerSize() * run.SampledLayers());
+    }
+    run.AssemblerStarted = true;
+  }
+  else if (!run.Assembler.SetSource(input, error))
+  {
+    vtkErrorMacro("Cannot stream the input: " << error << ".");
+    return false;
+  }
+
+  const vtkIdType layer = run.LayerSize();
+  vtkUnsignedCharArray* ghostArray = input->GetPointGhostArray();
+  const unsigned char* ghosts = ghostArray ? ghostArray->GetPointer(0) : nullptr;
+  const int layers = step.Last - step.First + 1;
+  const bool overlap = run.ScanFirst < run.Sampled[4];
+  vtkErrorDiffusionLayerRunner runner;
+  runner.SetThreaded(this->UseWorkerThread && layers > 1 &&
+    layer * layers >= MinimumVoxelsForWorkerThread &&
+    vtkSMPTools::GetEstimatedNumberOfThreads() > 1);
+  runner.SetFill([&](int k, float* density) {
+    const int z = step.First + k;
+    const vtkIdType begin = (z - extent[4]) * layer;
+    const double sum = run.Density.Fill(array, begin, begin + layer, ghosts, density);
+    if (z >= run.Sampled[4] && z <= run.Sampled[5])
+    {
+      run.LayerSums[z - run.Sampled[4]] = sum;
+    }
+  });
+  runner.SetBeforeScan([&](int k, const float* density) {
+    if (overlap && step.First + k == run.Sampled[4])
+    {
+      run.Kernel.CenterCarriedError(density); // the overlap shapes, but adds nothing
+    }
+  });
+  if (run.Mask)
+  {
+    runner.SetMaskStorage([&](int k) -> unsigned char* {
+      const int z = step.First + k;
+      return z < run.Sampled[4] ? nullptr : run.Mask->GetPointer((z - run.Sampled[4]) * layer);
+    });
+  }
+  const int progressStride = std::max(1, layers / 100);
+  runner.SetConsume([&](const vtkErrorDiffusionLayerRunner::Layer& l) {
+    const int z = step.First + l.Index;
+    if (z >= run.Sampled[4])
+    {
+      run.Assembler.AddLayer(z, l.Density, l.Mask, l.Count);
+    }
+    run.ProgressDone += 1.0;
+    if (l.Index % progressStride == 0)
+    {
+      this->UpdateProgress(run.ProgressDone / run.ProgressTotal);
+    }
+    return !this->IsAborted();
+  });
+  const bool lastHasNext = step.Last < run.Sampled[5];
+  if (!runner.Run(run.Kernel, run.NX(), run.NY(), layers, lastHasNext))
+  {
+    if (!runner.GetError().empty())
+    {
+      vtkErrorMacro("Sampling failed: " << runner.GetError());
+    }
+    return false;
+  }
+  return true;
+}
+
+//------------------------------------------------------------------------------
+// After the last step: the closing correction, the points and their cells,
+// the field data and the mask.
+void vtkErrorDiffusionSampler::FinishOutput(
+  vtkImageData* input, vtkPolyData* output, vtkImageData* maskOutput)
+{
+  vtkInternals& run = *this->Internals;
+  double expected = 0.0;
+  for (double sum : run.LayerSums)
+  {
+    expected += sum;
+  }
+  if (run.AssemblerStarted)
+  {
+    // Error diffusion cannot take a point back: a scan that ends on negative
+    // error fired that many points ahead of their mass, in the last layers
+    // that have points (see vtkErrorDiffusionKernel); they go.
+    const double leftover = run.Kernel.GetCarriedError();
+    if (this->Method == METHOD_ERROR_DIFFUSION && leftover <= -0.5)
+    {
+      const auto voxels = run.Assembler.RemoveLast(static_cast<vtkIdType>(std::llround(-leftover)));
+      for (const auto& ijk : voxels)
+      {
+        if (run.Mask)
+        {
+          const vtkIdType i = (ijk[0] - run.Sampled[0]) +
+            static_cast<vtkIdType>(run.NX()) *
+              ((ijk[1] - run.Sampled[2]) + static_cast<vtkIdType>(run.NY()) * (ijk[2] - run.Sampled[4]));
+          run.Mask->SetValue(i, 0);
+        }
+      }
+    }
+    run.Points->SetPoints(run.Assembler.End());
+    run.Points->SetVerts(
+      vtkErrorDiffusionPointAssembler::MakeVertices(run.Points->GetNumberOfPoints()));
+  }
+  output->ShallowCopy(run.Points);
+
+  vtkFieldData* fd = output->GetFieldData();
+  const double* origin = input->GetOrigin();
+  const double* spacing = input->GetSpacing();
+  const double* direction = input->GetDirectionMatrix()->GetData();
+  vtkNew<vtkDoubleArray> originArray;
+  AddFieldArray(fd, originArray, "SamplingGridOrigin", 3);
+  originArray->SetTuple(0, const_cast<double*>(origin));
+  vtkNew<vtkDoubleArray> spacingArray;
+  AddFieldArray(fd, spacingArray, "SamplingGridSpacing", 3);
+  spacingArray->SetTuple(0, spacing);
+  vtkNew<vtkIntArray> extentArray;
+  AddFieldArray(fd, extentArray, "SamplingGridExtent", 6);
+  std::copy(run.Sampled, run.Sampled + 6, extentArray->GetPointer(0));
+  vtkNew<vtkDoubleArray> directionArray;
+  AddFieldArray(fd, directionArray, "SamplingGridDirection", 9);
+  directionArray->SetTuple(0, direction);
+  vtkNew<vtkDoubleArray> scaleArray;
+  AddFieldArray(fd, scaleArray, "DensityScale", 1);
+  scaleArray->SetValue(0, run.Density.GetScale());
+  vtkNew<vtkDoubleArray> expectedArray;
+  AddFieldArray(fd, expectedArray, "ExpectedNumberOfPoints", 1);
+  expectedArray->SetValue(0, expected);
+
+  if (run.Mask)
+  {
+    maskOutput->SetExtent(run.Sampled);
+    maskOutput->SetOrigin(origin);
+    maskOutput->SetSpacing(spacing);
+    maskOutput->SetDirectionMatrix(direction);
+    maskOutput->GetPointData()->SetScalars(run.Mask);
+  }
+}
+
+//------------------------------------------------------------------------------
+// The steps the input at hand covers (all of them, for an input held whole).
+bool vtkErrorDiffusionSampler::Advance(vtkImageData* input, vtkInformationVector** inputVector)
+{
+  vtkInternals& run = *this->Internals;
+  int have[6];
+  input->GetExtent(have);
+  const size_t first = run.Current;
+  while (run.Current < run.Steps.size())
+  {
+    int need[6];
+    run.StepExtent(run.Steps[run.Current], need);
+    if (!Contains(have, need))
+    {
+      break;
+    }
+    const bool done = run.Steps[run.Current].Statistics ? this->CollectStatistics(input, inputVector)
+                                                        : this->SampleSlab(input, inputVector);
+    if (!done)
+    {
+      return false;
+    }
+    ++run.Current;
+  }
+  if (run.Current == first)
+  {
+    int need[6];
+    run.StepExtent(run.Steps[run.Current], need);
+    vtkErrorMacro("The input delivered the extent [" << have[0] << ", " << have[1] << ", "
+      << have[2] << ", " << have[3] << ", " << have[4] << ", " << have[5] << "] where ["
+      << need[0] << ", " << need[1] << ", " << need[2] << ", " << need[3] << ", " << need[4]
+      << ", " << need[5] << "] was requested.");
+    return false;
+  }
+  return true;
+}
+
+//------------------------------------------------------------------------------
 int vtkErrorDiffusionSampler::RequestData(
-  vtkInformation*, vtkInformationVector** inputVector, vtkInformationVector* outputVector)
+  vtkInformation* request, vtkInformationVector** inputVector, vtkInformationVector* outputVector)
 {
   vtkImageData* input = vtkImageData::GetData(inputVector[0], 0);
   vtkPolyData* output = vtkPolyData::GetData(outputVector, 0);
   vtkImageData* mask = vtkImageData::GetData(outputVector, 1);
-  output->Initialize();
-  mask->Initialize();
+  vtkInternals& run = *this->Internals;
+  const auto continueKey = vtkStreamingDemandDrivenPipeline::CONTINUE_EXECUTING();
+  const auto fail = [&](int status) {
+    run.Running = false;
+    run.Points = nullptr;
+    run.Mask = nullptr;
+    output->Initialize();
+    mask->Initialize();
+    request->Remove(continueKey);
+    return status;
+  };
   if (!input)
   {
     vtkErrorMacro("No input image.");
-    return 0;
+    return fail(0);
   }
-
-  // --- Validate everything before any work, so bad input costs nothing. The
-  // properties first: every piece of a distributed run sees the same ones, so
-  // all pieces stop here or none does.
-  if (!std::isfinite(this->DensityScale) || this->DensityScale < 0.0)
-  {
-    vtkErrorMacro("DensityScale must be finite and >= 0, not " << this->DensityScale << ".");
-    return 0;
-  }
-  if (!std::isfinite(this->ModulationScale) || this->ModulationScale < 0.0)
-  {
-    vtkErrorMacro("ModulationScale must be finite and >= 0, not " << this->ModulationScale << ".");
-    return 0;
-  }
-  if (this->DensityMapping == DENSITY_TRANSFER_FUNCTION &&
-    (!this->TransferFunction || this->TransferFunction->GetSize() == 0))
-  {
-    vtkErrorMacro("DensityMapping is TransferFunction but no (or an empty) transfer function "
-                  "is set.");
-    return 0;
-  }
-
-  // One piece of several (pvbatch with MPI): the default scalar range is the
-  // range over all pieces, so that equal values get equal densities
-  // everywhere. Every piece takes part in that reduction, even one that has
-  // nothing to sample, before it gives up.
-  vtkInformation* outInfo = outputVector->GetInformationObject(0);
-  const int pieces =
-    outInfo->Has(vtkStreamingDemandDrivenPipeline::UPDATE_NUMBER_OF_PIECES())
-    ? outInfo->Get(vtkStreamingDemandDrivenPipeline::UPDATE_NUMBER_OF_PIECES())
-    : 1;
-  const bool distributed =
-    pieces > 1 && this->Controller && this->Controller->GetNumberOfProcesses() > 1;
-  const bool globalRange = distributed && this->DensityMapping == DENSITY_SCALAR_RANGE &&
-    !this->UseCustomScalarRange;
-
-  int extent[6];
-  input->GetExtent(extent);
-  const int nx = extent[1] - extent[0] + 1;
-  const int ny = extent[3] - extent[2] + 1;
-  const int nz = extent[5] - extent[4] + 1;
-  const bool emptyPiece = nx <= 0 || ny <= 0 || nz <= 0;
-  vtkDataArray* array = nullptr;
-  if (emptyPiece && !distributed)
-  {
-    vtkErrorMacro("The input image has an empty extent [" << extent[0] << ", " << extent[1]
-                                                          << ", " << extent[2] << ", " << extent[3]
-                                                          << ", " << extent[4] << ", " << extent[5]
-                                                          << "]: nothing to sample.");
-  }
-  else if (!emptyPiece)
-  {
-    array = this->GetDensityArray(input, inputVector);
-  }
-
-  double range[2] = { this->ScalarRange[0], this->ScalarRange[1] };
-  if (this->DensityMapping == DENSITY_SCALAR_RANGE && !this->UseCustomScalarRange)
-  {
-    range[0] = std::numeric_limits<double>::infinity();
-    range[1] = -range[0];
-    if (array)
-    {
-      ComputeFiniteRange(array, this->Component, range);
-    }
-    if (globalRange)
-    {
-      const double local[2] = { range[0], -range[1] };
-      double global[2] = { 0.0, 0.0 };
-      this->Controller->AllReduce(local, global, 2, vtkCommunicator::MIN_OP);
-      range[0] = global[0];
-      range[1] = -global[1];
-    }
-  }
-  if (!array)
-  {
-    // An empty piece of a distributed run is not an error: nothing to sample.
-    return emptyPiece && distributed ? 1 : 0;
-  }
-  const vtkIdType voxels = static_cast<vtkIdType>(nx) * ny * nz;
-
-  DensityMap map;
-  map.Mode = this->DensityMapping;
-  map.Scale = this->DensityScale;
-  if (this->DensityMapping == DENSITY_TRANSFER_FUNCTION)
-  {
-    map.Function = this->TransferFunction;
-  }
-  else if (this->DensityMapping == DENSITY_SCALAR_RANGE)
-  {
-    if (!std::isfinite(range[0]) || !std::isfinite(range[1]) || range[0] > range[1])
-    {
-      vtkErrorMacro("Invalid scalar range [" << range[0] << ", " << range[1] << "].");
-      return 0;
-    }
-    map.Low = range[0];
-    if (range[1] > range[0])
-    {
-      map.InverseWidth = 1.0 / (range[1] - range[0]);
-    }
-    else
-    {
-      // A single value is the top of its own range: density 1 there (times
-      // DensityScale), 0 below, so a constant field samples uniformly.
-      vtkWarningMacro("The scalar range is the single value " << range[0]
-                                                              << ": it maps to density 1.");
-      map.Mode = DENSITY_STEP;
-    }
-  }
-
-  vtkErrorDiffusionParameterTable table;
-  if (this->ParameterSet == PARAMETERS_FIXED)
-  {
-    table = vtkErrorDiffusionParameterTable::Fixed();
-  }
-  else if (this->ParameterSet == PARAMETERS_OPTIMIZED)
-  {
-    table = vtkErrorDiffusionParameterTable::Optimized();
-  }
-  else if (this->ParameterSet == PARAMETERS_CUSTOM)
-  {
-    std::string error;
-    if (this->ParameterFile.empty())
-    {
-      vtkErrorMacro("ParameterSet is Custom but no ParameterFile is set.");
-      return 0;
-    }
-    if (!vtkErrorDiffusionParameterTable::ReadFile(this->ParameterFile, table, error))
-    {
-      vtkErrorMacro("Cannot use the parameter file: " << error);
-      return 0;
-    }
-  }
-  else
-  {
-    table = vtkErrorDiffusionParameterTable::Paper();
-  }
-
-  // --- Sample layer by layer: the scan on a worker thread, the points built
-  // here as its layers come in (or both in turn on this thread).
-  vtkErrorDiffusionKernel kernel;
-  kernel.SetParameters(table);
-  kernel.SetModulationScale(this->ModulationScale);
-  kernel.SetSeed(static_cast<std::uint64_t>(static_cast<unsigned int>(this->Seed)));
-  kernel.SetBoundaryMode(this->BoundaryMode);
-  kernel.SetMethod(this->Method);
-  kernel.SetWarmUpLayers(this->WarmUpLayers);
-  kernel.Begin(nx, ny, nz, extent[4]);
-
-  const vtkIdType layerSize = static_cast<vtkIdType>(nx) * ny;
-  vtkSmartPointer<vtkUnsignedCharArray> maskArray;
-  if (this->GenerateMask)
-  {
-    maskArray = vtkSmartPointer<vtkUnsignedCharArray>::New();
-    maskArray->SetName("SampleMask");
-    maskArray->SetNumberOfValues(voxels);
-  }
-
-  vtkErrorDiffusionPointAssembler assembler;
-  assembler.Begin(input, output->GetPointData(),
-    this->OutputPointsPrecision == DOUBLE_PRECISION ? VTK_DOUBLE : VTK_FLOAT);
-  vtkSmartPointer<vtkCellArray> vertices;
-
-  vtkErrorDiffusionLayerRunner runner;
-  runner.SetThreaded(this->UseWorkerThread && nz > 1 &&
-    voxels >= MIN_VOXELS_FOR_WORKER_THREAD && std::thread::hardware_concurrency() > 1);
-  // Voxels that belong to another piece get density 0, so each voxel of the
-  // whole volume is sampled once: points the input flags as duplicate or
-  // hidden, and, for one piece of several, the upper faces shared with the
-  // next piece (structured pieces overlap by one plane of points).
-  vtkUnsignedCharArray* ghosts = input->GetPointGhostArray();
-  const unsigned char* ghostFlags = ghosts ? ghosts->GetPointer(0) : nullptr;
-  bool sharedFace[3] = { false, false, false };
-  vtkInformation* inInfo = inputVector[0]->GetInformationObject(0);
-  if (pieces > 1 && inInfo->Has(vtkStreamingDemandDrivenPipeline::WHOLE_EXTENT()))
-  {
-    int whole[6];
-    inInfo->Get(vtkStreamingDemandDrivenPipeline::WHOLE_EXTENT(), whole);
-    for (int a = 0; a < 3; ++a)
-    {
-      sharedFace[a] = extent[2 * a + 1] < whole[2 * a + 1];
-    }
-  }
-  runner.SetFill([&](int k, float* density) {
-    const vtkIdType first = k * layerSize;
-    FillLayerDensity(array, first, first + layerSize, this->Component, map, density);
-    if (ghostFlags)
-    {
-      const unsigned char notOwned =
-        vtkDataSetAttributes::DUPLICATEPOINT | vtkDataSetAttributes::HIDDENPOINT;
-      for (vtkIdType i = 0; i < layerSize; ++i)
-      {
-        density[i] = (ghostFlags[first + i] & notOwned) ? 0.0f : density[i];
-      }
-    }
-    if (sharedFace[0])
-    {
-      for (int j = 0; j < ny; ++j)
-      {
-        density[static_cast<vtkIdType>(j) * nx + nx - 1] = 0.0f;
-      }
-    }
-    if (sharedFace[1])
-    {
-      std::fill(density + layerSize - nx, density + layerSize, 0.0f);
-    }
-    if (sharedFace[2] && k == nz - 1)
-    {
-      std::fill(density, density + layerSize, 0.0f);
-    }
-  });
-  if (maskArray)
-  {
-    runner.SetMaskStorage([&](int k) { return maskArray->GetPointer(k * layerSize); });
-  }
-  const int progressStride = std::max(1, nz / 100);
-  runner.SetConsume([&](const vtkErrorDiffusionLayerRunner::Layer& layer) {
-    assembler.AddLayer(layer.Index, layer.Density, layer.Mask, layer.Count);
-    if (layer.Index % progressStride == 0)
-    {
-      this->UpdateProgress(static_cast<double>(layer.Index + 1) / nz);
-      return !this->IsAborted();
-    }
-    return true;
-  });
-  // The vertex cells need only the count: the scan thread makes them while
-  // the points are being finished.
-  runner.SetFinish([&](vtkIdType samples) {
-    vertices = vtkErrorDiffusionPointAssembler::MakeVertices(samples);
-  });
-
-  this->UpdateProgress(0.0);
-  if (!runner.Run(kernel, nx, ny, nz))
+  if (!run.Running)
   {
     output->Initialize();
-    if (!runner.GetError().empty())
+    mask->Initialize();
+    if (run.SampledLayers() == 0 || run.NX() <= 0 || run.NY() <= 0)
     {
-      vtkErrorMacro("Sampling failed: " << runner.GetError());
-      return 0;
+      if (run.Piece)
+      {
+        return fail(1); // more pieces than layers: this one has nothing to sample
+      }
+      vtkErrorMacro("The input image has an empty extent: nothing to sample.");
+      return fail(0);
     }
-    return 1; // aborted
+    this->UpdateProgress(0.0);
+    if (!this->StartRun(request, inputVector))
+    {
+      return fail(0);
+    }
+    run.Running = true;
   }
-  output->SetPoints(assembler.End());
-  output->SetVerts(vertices);
-
-  // --- The sampling grid, for the spectrum.
-  vtkFieldData* fd = output->GetFieldData();
-  vtkNew<vtkDoubleArray> origin;
-  AddFieldArray(fd, origin, "SamplingGridOrigin", 3);
-  origin->SetTuple(0, input->GetOrigin());
-  vtkNew<vtkDoubleArray> spacing;
-  AddFieldArray(fd, spacing, "SamplingGridSpacing", 3);
-  spacing->SetTuple(0, input->GetSpacing());
-  vtkNew<vtkIntArray> gridExtent;
-  AddFieldArray(fd, gridExtent, "SamplingGridExtent", 6);
-  std::copy(extent, extent + 6, gridExtent->GetPointer(0));
-  vtkNew<vtkDoubleArray> direction;
-  AddFieldArray(fd, direction, "SamplingGridDirection", 9);
-  direction->SetTuple(0, input->GetDirectionMatrix()->GetData());
-
-  if (maskArray)
+  if (!this->Advance(input, inputVector))
   {
-    mask->SetExtent(extent);
-    mask->SetOrigin(input->GetOrigin());
-    mask->SetSpacing(input->GetSpacing());
-    mask->SetDirectionMatrix(input->GetDirectionMatrix());
-    mask->GetPointData()->SetScalars(maskArray);
+    return fail(this->IsAborted() ? 1 : 0);
   }
+  if (run.Current < run.Steps.size())
+  {
+    request->Set(continueKey, 1);
+    return 1;
+  }
+  this->FinishOutput(input, output, mask);
+  run.Running = false;
+  run.Points = nullptr;
+  run.Mask = nullptr;
+  request->Remove(continueKey);
   this->UpdateProgress(1.0);
   return 1;
 }
@@ -617,15 +789,18 @@ void vtkErrorDiffusionSampler::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "ScalarRange: " << this->ScalarRange[0] << ", " << this->ScalarRange[1] << "\n";
   os << indent << "UseCustomScalarRange: " << this->UseCustomScalarRange << "\n";
   os << indent << "TransferFunction: " << this->TransferFunction << "\n";
+  os << indent << "UseNumberOfPoints: " << this->UseNumberOfPoints << "\n";
+  os << indent << "NumberOfPoints: " << this->NumberOfPoints << "\n";
   os << indent << "DensityScale: " << this->DensityScale << "\n";
   os << indent << "ParameterSet: " << this->ParameterSet << "\n";
   os << indent << "ParameterFile: " << this->ParameterFile << "\n";
   os << indent << "ModulationScale: " << this->ModulationScale << "\n";
   os << indent << "Seed: " << this->Seed << "\n";
-  os << indent << "BoundaryMode: " << this->BoundaryMode << "\n";
   os << indent << "WarmUpLayers: " << this->WarmUpLayers << "\n";
+  os << indent << "Jitter: " << this->Jitter << "\n";
   os << indent << "GenerateMask: " << this->GenerateMask << "\n";
   os << indent << "OutputPointsPrecision: " << this->OutputPointsPrecision << "\n";
   os << indent << "UseWorkerThread: " << this->UseWorkerThread << "\n";
-  os << indent << "Controller: " << this->Controller << "\n";
+  os << indent << "NumberOfSlabs: " << this->NumberOfSlabs << "\n";
+  os << indent << "OverlapLayers: " << this->OverlapLayers << "\n";
 }

@@ -9,72 +9,94 @@
  * with a blue-noise distribution (random, even, isotropic): the density-
  * dependent 3D error diffusion of Zhang et al. (rotated-serpentine scan,
  * modulated threshold, six density-dependent coefficients from Table 1). The
- * algorithm itself lives in vtkErrorDiffusionKernel (see there for the scan
- * order, the threshold, the mirroring of g > 0.5 and the boundary handling).
+ * algorithm lives in vtkErrorDiffusionKernel (scan order, threshold, the
+ * mirroring of g > 0.5, faces, exact counts).
  *
  * Input: vtkImageData with 1D, 2D or 3D extent (a 2D image is sampled as one
  * layer). The density comes from the point-data array chosen with
  * SetInputArrayToProcess(0, ...) (default: the active scalars), any numeric
- * type; Component selects the component (-1: the magnitude). The value x
- * becomes a density by DensityMapping:
- * - DENSITY_IDENTITY: g = x;
- * - DENSITY_SCALAR_RANGE: g = (x - lo) / (hi - lo) with [lo, hi] the array's
- *   finite range (of the chosen component or magnitude) or ScalarRange when
- *   UseCustomScalarRange is on; a range of zero width maps values at or above
- *   it to 1 and values below it to 0, with a warning;
- * - DENSITY_TRANSFER_FUNCTION: g = TransferFunction(x) (typically the opacity
- *   function of the scalar a ParaView user colours by).
- * Then g is multiplied by DensityScale and clamped to [0, 1]; NaN gives 0. The
- * expected number of points is the sum of g over the voxels.
+ * type; Component selects the component (-1: the magnitude). The value
+ * becomes a density by DensityMapping (see vtkSamplingDensity for the exact
+ * definitions):
+ * - DENSITY_IDENTITY: the value is the density;
+ * - DENSITY_SCALAR_RANGE: [lo, hi] maps linearly to [0, 1], with [lo, hi] the
+ *   array's finite range, or ScalarRange when UseCustomScalarRange is on;
+ * - DENSITY_TRANSFER_FUNCTION: TransferFunction maps value to density
+ *   (typically the opacity function a ParaView user volume-renders with);
+ *   without a function, a ramp over the finite range (as DENSITY_SCALAR_RANGE).
+ * The result is multiplied by a scale and clamped to [0, 1]; NaN gives 0. The
+ * expected number of points is the sum of the densities over the voxels.
  *
- * Output port 0: vtkPolyData, one vertex cell per sample, at voxel centres in
- * world coordinates (origin, spacing and direction matrix honoured). Every
- * input point-data array is copied for the sampled voxels, and a float array
- * `Density` holds the density each sample was drawn with (an input array of
- * that name is replaced). Field data records the sampling grid so a spectrum
- * can rebuild it: `SamplingGridOrigin` (3), `SamplingGridSpacing` (3),
+ * Point budget. With UseNumberOfPoints on (the default) the scale is solved so
+ * that the expected number of points is NumberOfPoints (vtkSamplingBudget: one
+ * pass over the values, exact for 8- and 16-bit data); a budget above what the
+ * volume can hold (every voxel of positive density drawn) gives a warning
+ * naming that maximum, and all those voxels are sampled. With it off, the
+ * scale is DensityScale. The error diffusion draws the expected number to
+ * within one point (see vtkErrorDiffusionKernel), white noise within its
+ * binomial spread.
+ *
+ * Output port 0: vtkPolyData, one vertex cell per sample, at voxel centers in
+ * world coordinates (origin, spacing and direction matrix honored), or, with
+ * Jitter on, at a point drawn uniformly inside the voxel (deterministic per
+ * Seed; for rendering, where points on a lattice read as lines). Every input
+ * point-data array with one tuple per voxel is copied for the sampled voxels
+ * (others are left out with a warning), and a float array `Density` holds the
+ * density each sample was drawn with (an input array of that name is
+ * replaced). Field data: `SamplingGridOrigin` (3), `SamplingGridSpacing` (3),
  * `SamplingGridExtent` (6, the extent that was sampled) and
- * `SamplingGridDirection` (9, row major).
+ * `SamplingGridDirection` (9, row major), so a spectrum can rebuild the grid
+ * (jittered points bin back to their voxels); `DensityScale` (the scale used)
+ * and `ExpectedNumberOfPoints` (the sum of the densities).
  *
- * Output port 1: when GenerateMask is on, the binary sample mask as vtkImageData
- * (uint8 array `SampleMask`, 1 where a sample was drawn) on the input's
- * geometry; otherwise an empty image.
+ * Output port 1: when GenerateMask is on, the binary sample mask as
+ * vtkImageData (uint8 array `SampleMask`, 1 where a sample was drawn) on the
+ * sampled extent; otherwise an empty image with an empty whole extent, which
+ * costs nothing and never makes the filter execute again.
  *
- * The filter samples whatever extent the pipeline hands it: under pvbatch with
- * MPI each rank samples its own piece (pieces do not exchange error, so piece
- * faces are treated like volume faces). Each voxel of the whole volume is
- * sampled by one piece: the plane a piece shares with the next one
- * (structured pieces overlap by one plane of points) is left to that one,
- * and points flagged DUPLICATEPOINT or HIDDENPOINT in the input's ghost array
- * are never sampled. The default scalar range is the range over all pieces
- * (see SetController). Time is
- * O(voxels); extra memory besides the output is a few layers (two of error,
- * four of densities and masks). The output arrays reserve address space for
- * one point per voxel (up to 2^28) so they never grow by copying; only what
- * is written is committed, and the rest is released at the end (see
- * vtkErrorDiffusionPointAssembler). The scan runs on a worker thread while
- * this thread builds the points (UseWorkerThread). Progress is reported per
- * layer; abort is honoured between layers.
+ * Pieces and streaming. A request for piece p of n samples the p-th of n
+ * z-slabs of the whole extent (full layers, so the scan runs as for the whole
+ * volume): it first scans up to OverlapLayers layers above its slab to settle
+ * the error pattern it enters with, and its own count is exact. The density
+ * scale and range come from the whole volume (the statistics pass reads it;
+ * vtkPErrorDiffusionSampler reduces the pieces' statistics instead). With
+ * NumberOfSlabs > 1 the input is requested in that many z-slabs, one after
+ * the other (the statistics first, when needed, then the sampling), and the
+ * scan carries its state from slab to slab: the output is the same as in one
+ * go, and the input is never held whole. Readers that produce sub-extents
+ * (MetaImage, raw NRRD, VTI with raw or uncompressed data, vtkImageReader2)
+ * then read one slab at a time; others deliver more than asked for, which is
+ * correct but saves nothing. The points and the mask (GenerateMask) still
+ * grow with the output.
  *
- * Bad input (no array, non-numeric array, cell data, empty extent, component
- * out of range, negative or non-finite DensityScale or ModulationScale, a
- * missing transfer function, an unreadable or malformed parameter file) gives a
- * vtkErrorMacro and empty outputs.
+ * Time O(voxels); memory besides the input and the output a few layers. The
+ * scan runs on a worker thread while this thread maps the densities and
+ * builds the points (UseWorkerThread, and only when vtkSMPTools runs more than
+ * one thread). Progress is reported per layer; abort is honored between
+ * layers and leaves an empty output.
  *
- * @sa vtkErrorDiffusionKernel vtkErrorDiffusionParameterTable vtkBlueNoiseSpectrum
+ * Bad input (no array, non-numeric or cell-data array, component out of range,
+ * empty extent, non-finite DensityScale or ModulationScale, an unreadable or
+ * malformed parameter file, slabs whose arrays differ) gives a vtkErrorMacro
+ * and empty outputs; the next good update works.
+ *
+ * @sa vtkErrorDiffusionKernel vtkSamplingDensity vtkSamplingBudget
+ * vtkErrorDiffusionParameterTable vtkBlueNoiseSpectrum vtkPErrorDiffusionSampler
  */
 #ifndef vtkErrorDiffusionSampler_h
 #define vtkErrorDiffusionSampler_h
 
+#include "vtkErrorDiffusionKernel.h"   // for the Methods enum
 #include "vtkFiltersBlueNoiseModule.h" // for export macro
 #include "vtkPolyDataAlgorithm.h"
+#include "vtkSamplingDensity.h" // for the Mappings enum
 
-#include <string>
+#include <memory> // for std::unique_ptr
+#include <string> // for std::string
 
-class vtkDataArray;
 class vtkImageData;
-class vtkMultiProcessController;
 class vtkPiecewiseFunction;
+class vtkSamplingBudget;
 
 class VTKFILTERSBLUENOISE_EXPORT vtkErrorDiffusionSampler : public vtkPolyDataAlgorithm
 {
@@ -83,11 +105,17 @@ public:
   vtkTypeMacro(vtkErrorDiffusionSampler, vtkPolyDataAlgorithm);
   void PrintSelf(ostream& os, vtkIndent indent) override;
 
+  enum Methods
+  {
+    METHOD_ERROR_DIFFUSION = vtkErrorDiffusionKernel::METHOD_ERROR_DIFFUSION,
+    METHOD_WHITE_NOISE = vtkErrorDiffusionKernel::METHOD_WHITE_NOISE
+  };
+
   enum DensityMappings
   {
-    DENSITY_IDENTITY = 0,
-    DENSITY_SCALAR_RANGE = 1,
-    DENSITY_TRANSFER_FUNCTION = 2
+    DENSITY_IDENTITY = vtkSamplingDensity::IDENTITY,
+    DENSITY_SCALAR_RANGE = vtkSamplingDensity::SCALAR_RANGE,
+    DENSITY_TRANSFER_FUNCTION = vtkSamplingDensity::TRANSFER_FUNCTION
   };
 
   enum ParameterSets
@@ -96,18 +124,6 @@ public:
     PARAMETERS_FIXED = 1,
     PARAMETERS_CUSTOM = 2,
     PARAMETERS_OPTIMIZED = 3
-  };
-
-  enum Methods
-  {
-    METHOD_ERROR_DIFFUSION = 0,
-    METHOD_WHITE_NOISE = 1
-  };
-
-  enum BoundaryModes
-  {
-    BOUNDARY_RENORMALIZE = 0,
-    BOUNDARY_STEADY_STATE = 1
   };
 
   ///@{
@@ -149,8 +165,9 @@ public:
   ///@{
   /**
    * The range mapped to [0, 1] by DENSITY_SCALAR_RANGE when
-   * UseCustomScalarRange is on (otherwise the array's own range is used).
-   * Default [0, 1], off.
+   * UseCustomScalarRange is on (otherwise the array's own finite range is
+   * used); it must be finite with ScalarRange[1] > ScalarRange[0]. Default
+   * [0, 1], off.
    */
   vtkSetVector2Macro(ScalarRange, double);
   vtkGetVector2Macro(ScalarRange, double);
@@ -162,7 +179,8 @@ public:
   ///@{
   /**
    * The function from array value to density used by
-   * DENSITY_TRANSFER_FUNCTION. Not owned exclusively (reference counted).
+   * DENSITY_TRANSFER_FUNCTION (values outside [0, 1] are clamped). Default
+   * none: a ramp over the array's finite range.
    */
   virtual void SetTransferFunction(vtkPiecewiseFunction*);
   vtkGetObjectMacro(TransferFunction, vtkPiecewiseFunction);
@@ -170,17 +188,24 @@ public:
 
   ///@{
   /**
-   * Multiplies the mapped density before it is clamped to [0, 1]; the way to
-   * choose the number of points. Must be finite and >= 0. Default 1.
+   * The point budget: with UseNumberOfPoints on (default), the density scale
+   * is solved so that the expected number of points is NumberOfPoints
+   * (default 100000). With it off, DensityScale (finite, >= 0, default 1)
+   * multiplies the mapped densities.
    */
-  vtkSetMacro(DensityScale, double);
+  vtkSetMacro(UseNumberOfPoints, bool);
+  vtkGetMacro(UseNumberOfPoints, bool);
+  vtkBooleanMacro(UseNumberOfPoints, bool);
+  vtkSetClampMacro(NumberOfPoints, vtkIdType, 0, VTK_ID_MAX);
+  vtkGetMacro(NumberOfPoints, vtkIdType);
+  vtkSetClampMacro(DensityScale, double, 0.0, VTK_DOUBLE_MAX);
   vtkGetMacro(DensityScale, double);
   ///@}
 
   ///@{
   /**
    * Diffusion coefficients and modulation strengths: PARAMETERS_PAPER (Table 1
-   * of the paper, default), PARAMETERS_FIXED (the un-optimised baseline of the
+   * of the paper, default), PARAMETERS_FIXED (the un-optimized baseline of the
    * paper's Fig. 8), PARAMETERS_CUSTOM (read from ParameterFile, in the
    * format described in vtkErrorDiffusionParameterTable) or
    * PARAMETERS_OPTIMIZED (this project's own search, lower T(g) than Table 1;
@@ -194,39 +219,47 @@ public:
 
   ///@{
   /**
-   * Factor s in the threshold t = 0.5 + s * r * m(g), r uniform in [0, 1).
-   * s = 1 reads the paper's Eq. 1 literally; s = 0.5 is the scale of Zhou and
-   * Fang's 2D code. Must be finite and >= 0. Default 0.5: with Table 1 it gives
-   * the lower low-frequency ratio L(g) at every key level (128^3, 4 seeds:
-   * 0.0903 against 0.0935 at g = 8/255, 0.407 against 0.432 at 32/255; the
-   * bluenoise-boundary-study program prints both).
+   * Factor s of the threshold modulation, t = 0.5 - C(g) + s * r * m(g) with
+   * r uniform in [0, 1): s = 1 reads the paper's Eq. 1 literally; s = 0.5 is
+   * the scale of Zhou and Fang's 2D code, with which Table 1 gives the lower
+   * low-frequency ratio L(g). In [0, 2]. Default 0.5.
    */
-  vtkSetMacro(ModulationScale, double);
+  vtkSetClampMacro(ModulationScale, double, 0.0, 2.0);
   vtkGetMacro(ModulationScale, double);
   ///@}
 
   ///@{
   /**
-   * Seed of the threshold noise. The same seed gives the same points, bit for
-   * bit. Default 0.
+   * Seed of the threshold noise (and of the jitter). The same seed gives the
+   * same points, bit for bit. Default 0.
    */
-  vtkSetMacro(Seed, int);
+  vtkSetClampMacro(Seed, int, 0, VTK_INT_MAX);
   vtkGetMacro(Seed, int);
   ///@}
 
   ///@{
   /**
-   * Boundary handling: BOUNDARY_STEADY_STATE (default) starts the scan with
-   * the error buffers charged as if the scan had been running and lets the
-   * last layer pass its error out of the volume; BOUNDARY_RENORMALIZE is the
-   * paper-faithful behaviour (empty first layers, error piled into the last
-   * layer). WarmUpLayers (rounded up to whole scanning cycles of 4) is the
-   * number of virtual layers used to settle the buffers. Default 8.
+   * Virtual layers (rounded up to whole scanning cycles of 4) scanned with the
+   * first layer's densities before it, so that the first layers are sampled
+   * from a settled error pattern (see vtkErrorDiffusionKernel::WarmUp). They
+   * add no points and no error. In [0, 4096]. Default 8.
    */
-  vtkSetClampMacro(BoundaryMode, int, BOUNDARY_RENORMALIZE, BOUNDARY_STEADY_STATE);
-  vtkGetMacro(BoundaryMode, int);
   vtkSetClampMacro(WarmUpLayers, int, 0, 4096);
   vtkGetMacro(WarmUpLayers, int);
+  ///@}
+
+  ///@{
+  /**
+   * Place each point uniformly inside its voxel instead of at its center
+   * (deterministic per Seed and voxel). Points on the voxel lattice render,
+   * in perspective, as lines radiating from the view center; jittered ones
+   * read as the blue noise they are. The SamplingGrid field data still
+   * describes the voxels, so the spectrum of the points does not change.
+   * Default off.
+   */
+  vtkSetMacro(Jitter, bool);
+  vtkGetMacro(Jitter, bool);
+  vtkBooleanMacro(Jitter, bool);
   ///@}
 
   ///@{
@@ -250,11 +283,11 @@ public:
   ///@{
   /**
    * Run the error-diffusion scan on a worker thread while the calling thread
-   * builds the output points, attributes and progress from the layers already
-   * scanned. The scan itself is sequential (each voxel depends on the one
-   * before), so this is the parallelism the method has; the output is
-   * identical either way. Used when the volume has at least 32768 voxels and
-   * two layers and the machine more than one hardware thread. Default on.
+   * maps the densities and builds the output points from the layers already
+   * scanned (the scan itself is sequential: each voxel depends on the one
+   * before). Used when vtkSMPTools runs more than one thread
+   * (VTK_SMP_MAX_THREADS) and the volume has at least 32768 voxels and two
+   * layers; the output is identical either way. Default on.
    */
   vtkSetMacro(UseWorkerThread, bool);
   vtkGetMacro(UseWorkerThread, bool);
@@ -263,15 +296,20 @@ public:
 
   ///@{
   /**
-   * The controller used when the filter samples one piece of several (under
-   * pvbatch or pvserver with MPI): with DENSITY_SCALAR_RANGE and no custom
-   * range, the range is reduced over all processes so that a value maps to
-   * the same density in every piece, and a piece with an empty extent gives
-   * an empty output without an error. Default: the global controller; set
-   * nullptr to map each piece by its own range.
+   * Request the input in this many z-slabs, one after the other, instead of
+   * whole (streaming; see the class comment). In [1, 65536]. Default 1.
    */
-  virtual void SetController(vtkMultiProcessController*);
-  vtkGetObjectMacro(Controller, vtkMultiProcessController);
+  vtkSetClampMacro(NumberOfSlabs, int, 1, 65536);
+  vtkGetMacro(NumberOfSlabs, int);
+  ///@}
+
+  ///@{
+  /**
+   * For piece p > 0 of several: layers above the piece scanned first to settle
+   * the error pattern it enters with. In [0, 4096]. Default 16.
+   */
+  vtkSetClampMacro(OverlapLayers, int, 0, 4096);
+  vtkGetMacro(OverlapLayers, int);
   ///@}
 
   /// Output port 1: the mask image.
@@ -287,7 +325,22 @@ protected:
   int FillInputPortInformation(int port, vtkInformation* info) override;
   int FillOutputPortInformation(int port, vtkInformation* info) override;
   int RequestInformation(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
+  int RequestUpdateExtent(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
   int RequestData(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
+
+  /**
+   * The layers whose values the statistics pass (range, budget) reads for
+   * piece `piece` of `pieces` of the whole extent: here the whole z range,
+   * so that every piece maps values alike.
+   */
+  virtual void GetStatisticsLayers(
+    const int whole[6], int piece, int pieces, int& first, int& last);
+
+  /**
+   * Combine the statistics of the pieces (vtkPErrorDiffusionSampler: over the
+   * processes). Returns false to fail the run. Here: nothing to do.
+   */
+  virtual bool ReduceStatistics(vtkSamplingBudget& statistics);
 
   int Method = METHOD_ERROR_DIFFUSION;
   int Component = 0;
@@ -295,24 +348,36 @@ protected:
   double ScalarRange[2] = { 0.0, 1.0 };
   bool UseCustomScalarRange = false;
   vtkPiecewiseFunction* TransferFunction = nullptr;
+  bool UseNumberOfPoints = true;
+  vtkIdType NumberOfPoints = 100000;
   double DensityScale = 1.0;
   int ParameterSet = PARAMETERS_PAPER;
   std::string ParameterFile;
   double ModulationScale = 0.5;
   int Seed = 0;
-  int BoundaryMode = BOUNDARY_STEADY_STATE;
   int WarmUpLayers = 8;
+  bool Jitter = false;
   bool GenerateMask = false;
   int OutputPointsPrecision = SINGLE_PRECISION;
   bool UseWorkerThread = true;
-  vtkMultiProcessController* Controller = nullptr;
+  int NumberOfSlabs = 1;
+  int OverlapLayers = 16;
 
 private:
   vtkErrorDiffusionSampler(const vtkErrorDiffusionSampler&) = delete;
   void operator=(const vtkErrorDiffusionSampler&) = delete;
 
+  class vtkInternals;
+  std::unique_ptr<vtkInternals> Internals;
+
   bool IsAborted();
-  // The selected point array if it can be sampled; nullptr after an error.
+  bool ValidateProperties();
+  bool StartRun(vtkInformation* outInfo, vtkInformationVector** inputVector);
+  bool Advance(vtkImageData* input, vtkInformationVector** inputVector);
+  bool CollectStatistics(vtkImageData* input, vtkInformationVector** inputVector);
+  bool FinishStatistics();
+  bool SampleSlab(vtkImageData* input, vtkInformationVector** inputVector);
+  void FinishOutput(vtkImageData* input, vtkPolyData* output, vtkImageData* mask);
   vtkDataArray* GetDensityArray(vtkImageData* input, vtkInformationVector** inputVector);
 };
 

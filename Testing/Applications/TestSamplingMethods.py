@@ -66,6 +66,7 @@ def sample(image, method, scale, seed):
     s.SetInputData(image)
     s.SetMethod(method)
     s.SetDensityMappingToScalarRange()
+    s.UseNumberOfPointsOff()
     s.SetDensityScale(scale)
     s.SetSeed(seed)
     s.Update()

@@ -84,6 +84,7 @@ def main():
             s.SetMethod(method)
             s.SetDensityMappingToTransferFunction()
             s.SetTransferFunction(f)
+            s.UseNumberOfPointsOff()
             s.SetDensityScale(scale)
             s.SetSeed(3)
             v, d = run(s)

@@ -50,11 +50,11 @@ void BM_Kernel(benchmark::State& state)
   for (auto _ : state)
   {
     vtkErrorDiffusionKernel kernel;
-    kernel.Begin(L, L, L);
+    kernel.Begin(L, L);
     samples = 0;
     for (int z = 0; z < L; ++z)
     {
-      samples += kernel.ProcessLayer(density.data(), density.data(), mask.data());
+      samples += kernel.ProcessLayer(density.data(), z + 1 < L ? density.data() : nullptr, mask.data());
     }
     benchmark::DoNotOptimize(samples);
   }
@@ -76,6 +76,7 @@ void BM_Filter(benchmark::State& state)
   vtkNew<vtkErrorDiffusionSampler> sampler;
   sampler->SetInputData(image);
   sampler->SetDensityMappingToIdentity();
+  sampler->UseNumberOfPointsOff();
   sampler->SetUseWorkerThread(state.range(2) != 0);
   vtkIdType samples = 0;
   for (auto _ : state)
@@ -102,6 +103,7 @@ void BM_FilterBrain(benchmark::State& state)
   vtkNew<vtkErrorDiffusionSampler> sampler;
   sampler->SetInputData(reader->GetOutput());
   sampler->SetDensityMappingToScalarRange();
+  sampler->UseNumberOfPointsOff();
   sampler->SetDensityScale(static_cast<double>(state.range(0)) / 1000.0);
   vtkIdType samples = 0;
   for (auto _ : state)

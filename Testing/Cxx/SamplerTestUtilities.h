@@ -12,13 +12,15 @@
 
 namespace bluenoise_test
 {
-// Samples `image` with the default settings changed by `configure`.
+// Samples `image`, its values taken as densities (identity mapping, no point
+// budget), with the settings changed by `configure`.
 inline vtkSmartPointer<vtkPolyData> Sample(vtkImageData* image,
   const std::function<void(vtkErrorDiffusionSampler*)>& configure = nullptr)
 {
   vtkNew<vtkErrorDiffusionSampler> sampler;
   sampler->SetInputData(image);
   sampler->SetDensityMappingToIdentity();
+  sampler->UseNumberOfPointsOff();
   if (configure)
   {
     configure(sampler);

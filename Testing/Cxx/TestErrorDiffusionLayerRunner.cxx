@@ -40,7 +40,7 @@ vtkErrorDiffusionKernel MakeKernel()
 {
   vtkErrorDiffusionKernel kernel;
   kernel.SetSeed(5);
-  kernel.Begin(NX, NY, NZ);
+  kernel.Begin(NX, NY);
   return kernel;
 }
 

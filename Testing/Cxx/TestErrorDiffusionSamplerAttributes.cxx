@@ -79,6 +79,7 @@ int main()
   {
     vtkNew<vtkErrorDiffusionSampler> s;
     s->SetInputData(image);
+    s->UseNumberOfPointsOff();
     s->Update();
     vtkPolyData* out = s->GetOutput();
     const vtkIdType n = CheckDensity(out, [&](vtkIdType v) { return (value(v) - 100.0) / 999.0; },
@@ -149,6 +150,7 @@ int main()
     // Editing the function re-executes the filter (MTime includes it).
     vtkNew<vtkErrorDiffusionSampler> s;
     s->SetInputData(image);
+    s->UseNumberOfPointsOff();
     s->SetDensityMappingToTransferFunction();
     s->SetTransferFunction(tf);
     s->Update();

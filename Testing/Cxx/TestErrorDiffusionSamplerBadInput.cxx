@@ -5,6 +5,7 @@
 #include "vtkPiecewiseFunction.h"
 #include "vtkStringArray.h"
 #include "vtkCellData.h"
+#include "vtkDoubleArray.h"
 #include "vtkExecutive.h"
 
 #include <cmath>
@@ -82,29 +83,33 @@ int main()
 
   Expect(good, [](vtkErrorDiffusionSampler* s) { s->SetComponent(1); }, "out of range",
     "component out of range");
-  Expect(good, [](vtkErrorDiffusionSampler* s) { s->SetDensityScale(-1.0); }, "DensityScale",
-    "negative scale");
+  // Out-of-range values are clamped by the setters (as ParaView's domains
+  // do); what no clamp can fix is an error.
   Expect(good,
     [](vtkErrorDiffusionSampler* s) {
-      s->SetDensityScale(std::numeric_limits<double>::infinity());
-    },
-    "DensityScale", "infinite scale");
-  Expect(good,
-    [](vtkErrorDiffusionSampler* s) {
+      s->UseNumberOfPointsOff();
       s->SetDensityScale(std::numeric_limits<double>::quiet_NaN());
     },
     "DensityScale", "NaN scale");
-  Expect(good, [](vtkErrorDiffusionSampler* s) { s->SetModulationScale(-0.5); },
-    "ModulationScale", "negative modulation scale");
-  Expect(good, [](vtkErrorDiffusionSampler* s) { s->SetDensityMappingToTransferFunction(); },
-    "no (or an empty) transfer function", "missing transfer function");
+  Expect(good,
+    [](vtkErrorDiffusionSampler* s) {
+      s->SetModulationScale(std::numeric_limits<double>::quiet_NaN());
+    },
+    "ModulationScale", "NaN modulation scale");
   Expect(good,
     [](vtkErrorDiffusionSampler* s) {
       s->SetDensityMappingToScalarRange();
       s->UseCustomScalarRangeOn();
       s->SetScalarRange(2.0, 1.0);
     },
-    "Invalid scalar range", "inverted scalar range");
+    "ScalarRange must be finite", "inverted scalar range");
+  Expect(good,
+    [](vtkErrorDiffusionSampler* s) {
+      s->SetDensityMappingToScalarRange();
+      s->UseCustomScalarRangeOn();
+      s->SetScalarRange(0.0, std::numeric_limits<double>::infinity());
+    },
+    "ScalarRange must be finite", "infinite scalar range");
   Expect(good,
     [](vtkErrorDiffusionSampler* s) { s->SetParameterSet(vtkErrorDiffusionSampler::PARAMETERS_CUSTOM); },
     "no ParameterFile", "custom set without file");
@@ -132,10 +137,60 @@ int main()
   observer->Watch(sampler);
   observer->Watch(sampler->GetExecutive());
   sampler->SetInputData(good);
-  sampler->SetDensityScale(-1);
+  sampler->UseNumberOfPointsOff();
+  sampler->SetDensityScale(std::numeric_limits<double>::quiet_NaN());
   sampler->Update();
   sampler->SetDensityScale(1);
   sampler->Update();
   Check(sampler->GetOutput()->GetNumberOfPoints() > 0, "recovers after an error");
+
+  // Point arrays without one tuple per voxel are left out with a warning,
+  // never read past their end.
+  {
+    auto image = MakeConstantVolume(16, 0.2f);
+    vtkNew<vtkFloatArray> shortArray;
+    shortArray->SetName("short");
+    shortArray->SetNumberOfValues(100);
+    shortArray->Fill(1.0f);
+    vtkNew<vtkFloatArray> emptyArray;
+    emptyArray->SetName("empty");
+    image->GetPointData()->AddArray(shortArray);
+    image->GetPointData()->AddArray(emptyArray);
+    vtkNew<vtkErrorDiffusionSampler> s;
+    vtkNew<MessageObserver> messages;
+    messages->Watch(s);
+    s->SetInputData(image);
+    s->SetNumberOfPoints(500);
+    s->SetDensityMappingToIdentity();
+    s->Update();
+    vtkPolyData* out = s->GetOutput();
+    Check(std::abs(out->GetNumberOfPoints() - 500) <= 2, "arrays of the wrong length: sampled");
+    Check(!out->GetPointData()->GetArray("short") && !out->GetPointData()->GetArray("empty") &&
+        out->GetPointData()->GetArray("density"),
+      "arrays of the wrong length are not carried, the others are");
+    Check(messages->Warnings.find("'short'") != std::string::npos &&
+        messages->Warnings.find("'empty'") != std::string::npos,
+      "a warning names them: '" + messages->Warnings + "'");
+  }
+  // A range of +-1e308, whose width overflows a double, maps like any other.
+  {
+    auto image = vtkSmartPointer<vtkImageData>::New();
+    image->SetDimensions(20, 20, 20);
+    vtkNew<vtkDoubleArray> huge;
+    huge->SetName("huge");
+    huge->SetNumberOfValues(8000);
+    for (vtkIdType i = 0; i < 8000; ++i)
+    {
+      const double t = static_cast<double>(i) / 7999.0;
+      huge->SetValue(i, -1e308 * (1.0 - t) + 1e308 * t);
+    }
+    image->GetPointData()->SetScalars(huge);
+    vtkNew<vtkErrorDiffusionSampler> s;
+    s->SetInputData(image);
+    s->SetNumberOfPoints(1000);
+    s->Update();
+    Check(std::abs(s->GetOutput()->GetNumberOfPoints() - 1000) <= 2,
+      "range of +-1e308: " + Str(s->GetOutput()->GetNumberOfPoints()) + " points for 1000");
+  }
   return Summary("TestErrorDiffusionSamplerBadInput");
 }

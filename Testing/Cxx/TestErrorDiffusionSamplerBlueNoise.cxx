@@ -22,13 +22,13 @@ std::vector<unsigned char> ErrorDiffusion(float g, int seed)
 {
   vtkErrorDiffusionKernel kernel;
   kernel.SetSeed(seed);
-  kernel.Begin(L, L, L);
+  kernel.Begin(L, L);
   const size_t layer = static_cast<size_t>(L) * L;
   std::vector<float> density(layer, g);
   std::vector<unsigned char> mask(layer * L);
   for (int z = 0; z < L; ++z)
   {
-    kernel.ProcessLayer(density.data(), density.data(), mask.data() + z * layer); // constant density
+    kernel.ProcessLayer(density.data(), z + 1 < L ? density.data() : nullptr, mask.data() + z * layer);
   }
   return mask;
 }

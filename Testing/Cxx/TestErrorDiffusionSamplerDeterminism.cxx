@@ -33,6 +33,7 @@ vtkSmartPointer<vtkImageData> MaskOf(vtkImageData* image, int seed)
   vtkNew<vtkErrorDiffusionSampler> sampler;
   sampler->SetInputData(image);
   sampler->SetDensityMappingToIdentity();
+  sampler->UseNumberOfPointsOff();
   sampler->SetSeed(seed);
   sampler->GenerateMaskOn();
   sampler->Update();
@@ -87,6 +88,7 @@ int main()
   sampler->SetInputData(image);
   sampler->SetSeed(7);
   sampler->SetDensityMappingToIdentity();
+  sampler->UseNumberOfPointsOff();
   sampler->Update();
   auto first = vtkSmartPointer<vtkPolyData>::New();
   first->DeepCopy(sampler->GetOutput());

@@ -21,6 +21,7 @@ int main()
   source->SetWholeExtent(0, 47, 0, 47, 0, 47);
   vtkNew<vtkErrorDiffusionSampler> sampler;
   sampler->SetInputConnection(source->GetOutputPort());
+  sampler->UseNumberOfPointsOff();
   sampler->SetDensityScale(0.3);
   // One mapping for every piece: the array's own range would be each piece's.
   sampler->UseCustomScalarRangeOn();

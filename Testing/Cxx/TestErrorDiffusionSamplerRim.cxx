@@ -83,6 +83,7 @@ Tally Measure(vtkImageData* image, const std::vector<int>& shell, const std::vec
   vtkNew<vtkErrorDiffusionSampler> sampler;
   sampler->SetInputData(image);
   sampler->SetDensityMappingToScalarRange();
+  sampler->UseNumberOfPointsOff();
   sampler->SetDensityScale(scale);
   sampler->SetSeed(seed);
   sampler->SetMethod(method);

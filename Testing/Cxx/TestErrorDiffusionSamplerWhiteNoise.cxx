@@ -19,6 +19,7 @@ int main()
     vtkNew<vtkErrorDiffusionSampler> s;
     s->SetInputData(image);
     s->SetDensityMappingToIdentity();
+    s->UseNumberOfPointsOff();
     s->SetMethod(method);
     s->SetSeed(seed);
     s->GenerateMaskOn();

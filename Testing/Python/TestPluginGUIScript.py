@@ -41,6 +41,7 @@ try:
 
     wavelet = Wavelet()
     sampler = ErrorDiffusionSampler(Input=wavelet)
+    sampler.UseNumberOfPoints = 0
     sampler.DensityScale = 0.3
     sampler.UpdatePipeline()
     result["points"] = sampler.GetDataInformation().GetNumberOfPoints()

@@ -108,15 +108,24 @@ def parse_default(prop):
     if prop.tag == "StringVectorProperty":
         return text
     items = text.split()
-    if prop.tag == "IntVectorProperty":
+    if prop.tag in ("IntVectorProperty", "IdTypeVectorProperty"):
         values = [int(v) for v in items]
     else:
         values = [float(v) for v in items]
     return values[0] if len(values) == 1 else tuple(values)
 
 
+# Defaults the GUI sets apart from the VTK class's, on purpose.
+GUI_DEFAULTS = {
+    # The GUI shows the points: on the voxel lattice they read as lines in
+    # perspective. VTK pipelines keep the lattice unless asked.
+    ("ErrorDiffusionSampler", "Jitter"): 1,
+}
+
+
 def check_xml_defaults(proxies, vtk_classes):
-    """The XML defaults are the VTK defaults: pvpython and VTK users get the same filter."""
+    """The XML defaults are the VTK defaults (but for GUI_DEFAULTS): pvpython and VTK users get
+    the same filter."""
     for name, cls in vtk_classes.items():
         obj = cls()
         for prop in xml_properties(proxies[name]):
@@ -128,6 +137,10 @@ def check_xml_defaults(proxies, vtk_classes):
             if not hasattr(obj, getter):
                 continue  # reported by the walk
             got = getattr(obj, getter)()
+            if (name, prop.get("name")) in GUI_DEFAULTS:
+                check(default == GUI_DEFAULTS[(name, prop.get("name"))] and not values_equal(got, default),
+                      "%s.%s: GUI default %r on purpose (VTK %r)" % (name, prop.get("name"), default, got))
+                continue
             if isinstance(default, str):
                 same = (got or "") == default
             else:
@@ -288,7 +301,7 @@ class Walker:
             check(values_equal(get(), value), "%s.%s: %s() %r == %r" % (self.name, key, getter, get(), value))
             return
 
-        is_int = cls == "vtkSMIntVectorProperty"
+        is_int = cls in ("vtkSMIntVectorProperty", "vtkSMIdTypeVectorProperty")
         default = element_values(prop)
         n = len(default)
         if "vtkSMEnumerationDomain" in domains:
@@ -311,8 +324,9 @@ class Walker:
             lo, hi = domain.GetMinimum(0), domain.GetMaximum(0)
             check(hi > lo, "%s.%s: array range domain [%g, %g] from the input" % (self.name, key, lo, hi))
             value = [lo + 0.25 * (hi - lo), hi - 0.125 * (hi - lo)][:n]
-        elif "vtkSMIntRangeDomain" in domains or "vtkSMDoubleRangeDomain" in domains:
-            domain = domains.get("vtkSMIntRangeDomain") or domains.get("vtkSMDoubleRangeDomain")
+        elif any(d in domains for d in ("vtkSMIntRangeDomain", "vtkSMDoubleRangeDomain", "vtkSMIdTypeRangeDomain")):
+            domain = (domains.get("vtkSMIntRangeDomain") or domains.get("vtkSMDoubleRangeDomain")
+                      or domains.get("vtkSMIdTypeRangeDomain"))
             value = [range_value(domain, i, default[i], is_int) for i in range(n)]
         else:
             # No domain (reported by the XML check): any distinct values.
@@ -389,8 +403,8 @@ def main():
         wavelet = Wavelet()
         calc = Calculator(Input=wavelet, Function="300-RTData", ResultArrayName="Inverted")
         calc.UpdatePipeline()
-        feeder = ErrorDiffusionSampler(Input=calc, DensityScale=0.1)
-        feeder2 = ErrorDiffusionSampler(Input=calc, DensityScale=0.1, Seed=3)
+        feeder = ErrorDiffusionSampler(Input=calc, NumberOfPoints=3000)
+        feeder2 = ErrorDiffusionSampler(Input=calc, NumberOfPoints=3000, Seed=3)
         feeder.UpdatePipeline()
         feeder2.UpdatePipeline()
         context = {"parameter_file": parameter_file,
@@ -406,9 +420,9 @@ def main():
                   "%s: the proxy's properties are those of the XML (%s)" % (name, sorted(set(seen) ^ xml.get(name, set()))))
 
         # 3. ParameterSet Custom reads the file: other points than Paper, same seed.
-        paper = ErrorDiffusionSampler(Input=calc, Scalars=["POINTS", "RTData"], DensityScale=0.3)
+        paper = ErrorDiffusionSampler(Input=calc, Scalars=["POINTS", "RTData"], NumberOfPoints=5000)
         paper.UpdatePipeline()
-        custom = ErrorDiffusionSampler(Input=calc, Scalars=["POINTS", "RTData"], DensityScale=0.3,
+        custom = ErrorDiffusionSampler(Input=calc, Scalars=["POINTS", "RTData"], NumberOfPoints=5000,
                                        ParameterSet="Custom", ParameterFile=parameter_file)
         custom.UpdatePipeline()
         a = servermanager.Fetch(paper)

@@ -42,7 +42,7 @@ def main():
     wavelet = Wavelet(WholeExtent=[0, 39, 0, 39, 0, 39])
     wavelet.UpdatePipeline()
     lo, hi = wavelet.PointData["RTData"].GetRange()
-    sampler = ErrorDiffusionSampler(Input=wavelet, DensityScale=scale)  # noqa: F821 (from the plugin)
+    sampler = ErrorDiffusionSampler(Input=wavelet, UseNumberOfPoints=0, DensityScale=scale)  # noqa: F821 (from the plugin)
     sampler.UpdatePipeline()
     points = servermanager.Fetch(sampler)
     n = points.GetNumberOfPoints()
@@ -71,7 +71,7 @@ def main():
     # One voxel, two pieces: one of them is empty. It must take part in the range reduction
     # (or the other would wait forever) and give no points and no error.
     tiny = Wavelet(WholeExtent=[0, 0, 0, 0, 0, 0])
-    tiny_sampler = ErrorDiffusionSampler(Input=tiny, DensityScale=1.0)  # noqa: F821
+    tiny_sampler = ErrorDiffusionSampler(Input=tiny, UseNumberOfPoints=0, DensityScale=1.0)  # noqa: F821
     tiny_sampler.UpdatePipeline()
     tiny_points = servermanager.Fetch(tiny_sampler)
     check(tiny_points.GetNumberOfPoints() == 1,

@@ -1,0 +1,140 @@
+// SPDX-FileCopyrightText: Copyright (c) 2025-2026 the BlueNoiseSampling contributors
+// SPDX-License-Identifier: BSD-3-Clause
+#include "vtkErrorDiffusionChargeCurve.h"
+
+#include "vtkErrorDiffusionKernel.h"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <map>
+#include <sstream>
+#include <string>
+
+namespace
+{
+// Calibration levels (1/255 units), whatever the table's keys: C varies with
+// g even where the parameters do not.
+const double FixedLevels[] = { 0.0255, 0.05, 0.1, 0.25, 0.5, 1.0, 2.0, 4.0, 8.0, 16.0, 32.0,
+  48.0, 64.0, 80.0, 96.0, 112.0, 127.5 };
+
+std::mutex CacheMutex;
+std::map<std::string, std::shared_ptr<vtkErrorDiffusionChargeCurve>> Cache;
+}
+
+//------------------------------------------------------------------------------
+std::shared_ptr<vtkErrorDiffusionChargeCurve> vtkErrorDiffusionChargeCurve::Get(
+  const vtkErrorDiffusionParameterTable& table, double modulationScale)
+{
+  std::ostringstream key;
+  table.Write(key);
+  key << "scale " << modulationScale;
+  std::lock_guard<std::mutex> lock(CacheMutex);
+  auto found = Cache.find(key.str());
+  if (found != Cache.end())
+  {
+    return found->second;
+  }
+  if (Cache.size() >= 256)
+  {
+    Cache.clear(); // a parameter search makes a new table per candidate
+  }
+  auto curve = std::make_shared<vtkErrorDiffusionChargeCurve>(table, modulationScale);
+  Cache[key.str()] = curve;
+  return curve;
+}
+
+//------------------------------------------------------------------------------
+vtkErrorDiffusionChargeCurve::vtkErrorDiffusionChargeCurve(
+  const vtkErrorDiffusionParameterTable& table, double modulationScale)
+  : Table(table)
+  , ModulationScale(modulationScale)
+{
+  this->Levels.assign(std::begin(FixedLevels), std::end(FixedLevels));
+  for (const auto& key : table.GetKeys())
+  {
+    if (key.Level > FixedLevels[0] && key.Level < 127.5)
+    {
+      this->Levels.push_back(key.Level);
+    }
+  }
+  std::sort(this->Levels.begin(), this->Levels.end());
+  this->Levels.erase(std::unique(this->Levels.begin(), this->Levels.end()), this->Levels.end());
+  for (double level : this->Levels)
+  {
+    this->RootLevels.push_back(std::cbrt(level));
+  }
+  this->Charges.assign(this->Levels.size(), std::numeric_limits<float>::quiet_NaN());
+}
+
+//------------------------------------------------------------------------------
+float vtkErrorDiffusionChargeCurve::ChargeOfLevel(size_t i)
+{
+  if (!std::isnan(this->Charges[i]))
+  {
+    return this->Charges[i];
+  }
+  // Start from the nearest level already known: the refinement then only has
+  // to settle a small difference.
+  float guess = 0.45f;
+  size_t nearest = this->Levels.size();
+  for (size_t j = 0; j < this->Levels.size(); ++j)
+  {
+    const bool known = !std::isnan(this->Charges[j]);
+    if (known && (nearest == this->Levels.size() ||
+                   std::abs(this->RootLevels[j] - this->RootLevels[i]) <
+                     std::abs(this->RootLevels[nearest] - this->RootLevels[i])))
+    {
+      nearest = j;
+    }
+  }
+  if (nearest < this->Levels.size())
+  {
+    guess = this->Charges[nearest];
+  }
+  const double g = this->Levels[i] / 255.0;
+  for (int seed : { 12345, 12346 })
+  {
+    guess += static_cast<float>(vtkErrorDiffusionKernel::MeasureReceivedError(
+      this->Table, this->ModulationScale, g, guess, seed));
+  }
+  this->Charges[i] = guess;
+  return guess;
+}
+
+//------------------------------------------------------------------------------
+float vtkErrorDiffusionChargeCurve::At(double g)
+{
+  if (!(g > 0.0) || g >= 1.0)
+  {
+    g = 0.0; // the charge of saturated voxels is never used; keep it finite
+  }
+  const double level = 255.0 * (g > 0.5 ? 1.0 - g : g);
+  std::lock_guard<std::mutex> lock(this->Mutex);
+  if (level <= this->Levels.front())
+  {
+    return this->ChargeOfLevel(0);
+  }
+  if (level >= this->Levels.back())
+  {
+    return this->ChargeOfLevel(this->Levels.size() - 1);
+  }
+  const size_t i =
+    std::upper_bound(this->Levels.begin(), this->Levels.end(), level) - this->Levels.begin();
+  const double r = std::cbrt(level);
+  const double t = (r - this->RootLevels[i - 1]) / (this->RootLevels[i] - this->RootLevels[i - 1]);
+  const float c0 = this->ChargeOfLevel(i - 1);
+  const float c1 = this->ChargeOfLevel(i);
+  return static_cast<float>(c0 + t * (c1 - c0));
+}
+
+//------------------------------------------------------------------------------
+std::vector<float> vtkErrorDiffusionChargeCurve::GetCharges()
+{
+  std::lock_guard<std::mutex> lock(this->Mutex);
+  for (size_t i = 0; i < this->Levels.size(); ++i)
+  {
+    this->ChargeOfLevel(i);
+  }
+  return this->Charges;
+}

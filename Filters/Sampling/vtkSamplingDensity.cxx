@@ -1,0 +1,277 @@
+// SPDX-FileCopyrightText: Copyright (c) 2025-2026 the BlueNoiseSampling contributors
+// SPDX-License-Identifier: BSD-3-Clause
+#include "vtkSamplingDensity.h"
+
+#include "vtkArrayDispatch.h"
+#include "vtkDataArrayRange.h"
+#include "vtkDataSetAttributes.h"
+#include "vtkPiecewiseFunction.h"
+#include "vtkSMPThreadLocal.h"
+#include "vtkSMPTools.h"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <type_traits>
+#include <vector>
+
+namespace
+{
+constexpr unsigned char NotOwned =
+  vtkDataSetAttributes::DUPLICATEPOINT | vtkDataSetAttributes::HIDDENPOINT;
+
+// The value of one tuple: a component, or the magnitude for component -1.
+template <typename TupleT>
+double TupleValue(const TupleT& tuple, int component)
+{
+  if (component >= 0)
+  {
+    return static_cast<double>(tuple[component]);
+  }
+  double sum = 0.0;
+  for (const auto c : tuple)
+  {
+    sum += static_cast<double>(c) * static_cast<double>(c);
+  }
+  return std::sqrt(sum);
+}
+
+// Small integer types are counted per value first: exact, and a fraction of
+// the cost of bucketing every value.
+template <typename T>
+constexpr bool IsSmallInteger()
+{
+  return std::is_integral<T>::value && sizeof(T) <= 2;
+}
+
+struct StatisticsWorker
+{
+  template <typename ArrayT>
+  void operator()(ArrayT* array, vtkIdType begin, vtkIdType end, int component,
+    const unsigned char* ghosts, vtkPiecewiseFunction* function, vtkSamplingBudget& out) const
+  {
+    using T = vtk::GetAPIType<ArrayT>;
+    if constexpr (IsSmallInteger<T>())
+    {
+      if (component >= 0)
+      {
+        this->CountValues(array, begin, end, component, ghosts, function, out);
+        return;
+      }
+    }
+    if (function) // not known to be safe from several threads
+    {
+      for (vtkIdType t = begin; t < end; ++t)
+      {
+        this->AddTuple(array, t, component, ghosts, function, out);
+      }
+      return;
+    }
+    vtkSMPThreadLocal<vtkSamplingBudget> local;
+    vtkSMPTools::For(begin, end, 65536, [&](vtkIdType first, vtkIdType last) {
+      vtkSamplingBudget& mine = local.Local();
+      for (vtkIdType t = first; t < last; ++t)
+      {
+        this->AddTuple(array, t, component, ghosts, nullptr, mine);
+      }
+    });
+    for (auto& partial : local)
+    {
+      out.Merge(partial);
+    }
+  }
+
+  template <typename ArrayT>
+  void AddTuple(ArrayT* array, vtkIdType t, int component, const unsigned char* ghosts,
+    vtkPiecewiseFunction* function, vtkSamplingBudget& out) const
+  {
+    if (ghosts && (ghosts[t] & NotOwned))
+    {
+      return;
+    }
+    const auto tuples = vtk::DataArrayTupleRange(array, t, t + 1);
+    double x = TupleValue(tuples[0], component);
+    if (function && !std::isnan(x))
+    {
+      x = function->GetValue(x);
+    }
+    out.Add(x);
+  }
+
+  template <typename ArrayT>
+  void CountValues(ArrayT* array, vtkIdType begin, vtkIdType end, int component,
+    const unsigned char* ghosts, vtkPiecewiseFunction* function, vtkSamplingBudget& out) const
+  {
+    using T = vtk::GetAPIType<ArrayT>;
+    constexpr int offset = std::is_signed<T>::value ? -static_cast<int>(std::numeric_limits<T>::min()) : 0;
+    constexpr size_t values = static_cast<size_t>(1) << (8 * sizeof(T));
+    using Counts = std::vector<double>;
+    vtkSMPThreadLocal<Counts> local;
+    const auto all = vtk::DataArrayValueRange(array);
+    const int nc = array->GetNumberOfComponents();
+    vtkSMPTools::For(begin, end, 65536, [&](vtkIdType first, vtkIdType last) {
+      Counts& counts = local.Local();
+      counts.resize(values, 0.0);
+      for (vtkIdType t = first; t < last; ++t)
+      {
+        if (!(ghosts && (ghosts[t] & NotOwned)))
+        {
+          counts[static_cast<int>(all[t * nc + component]) + offset] += 1.0;
+        }
+      }
+    });
+    Counts total(values, 0.0);
+    for (const Counts& counts : local)
+    {
+      for (size_t i = 0; i < counts.size(); ++i)
+      {
+        total[i] += counts[i];
+      }
+    }
+    for (size_t i = 0; i < values; ++i)
+    {
+      if (total[i] > 0.0)
+      {
+        const double v = static_cast<double>(static_cast<int>(i) - offset);
+        out.Add(function ? function->GetValue(v) : v, total[i]);
+      }
+    }
+  }
+};
+
+struct FillWorker
+{
+  template <typename ArrayT>
+  void operator()(ArrayT* array, vtkIdType begin, vtkIdType end, int component,
+    const unsigned char* ghosts, vtkPiecewiseFunction* function, double scale,
+    const vtkSamplingBudget::Mapping& map, float* out, double& sum) const
+  {
+    // g = clamp(scale * (a x + b)); scale may be +inf (a budget out of
+    // reach: every voxel of positive density drawn).
+    const double a = map.A;
+    const double b = map.B;
+    const auto density = [a, b, scale](double x) -> float {
+      const double g = scale * (a * x + b);
+      if (!(g > 0.0)) // NaN too
+      {
+        return 0.0f;
+      }
+      return g >= 1.0 ? 1.0f : static_cast<float>(g);
+    };
+    double total = 0.0;
+    vtkIdType i = 0;
+    for (const auto tuple : vtk::DataArrayTupleRange(array, begin, end))
+    {
+      double x = TupleValue(tuple, component);
+      if (function && !std::isnan(x))
+      {
+        x = function->GetValue(x);
+      }
+      const float g = (ghosts && (ghosts[begin + i] & NotOwned)) ? 0.0f : density(x);
+      out[i++] = g;
+      total += g;
+    }
+    sum = total;
+  }
+};
+}
+
+//------------------------------------------------------------------------------
+void vtkSamplingDensity::SetMapping(int mode, int component, vtkPiecewiseFunction* function)
+{
+  this->Mode = mode;
+  this->Component = component;
+  this->Function = mode == TRANSFER_FUNCTION ? function : nullptr;
+  this->RangeSet = false;
+  this->Map = vtkSamplingBudget::Mapping();
+  this->Scale = 1.0;
+}
+
+//------------------------------------------------------------------------------
+void vtkSamplingDensity::SetRange(double low, double high)
+{
+  this->Range[0] = low;
+  this->Range[1] = high;
+  this->RangeSet = true;
+}
+
+//------------------------------------------------------------------------------
+void vtkSamplingDensity::GetRange(double range[2]) const
+{
+  range[0] = this->Range[0];
+  range[1] = this->Range[1];
+}
+
+//------------------------------------------------------------------------------
+bool vtkSamplingDensity::NeedsStatistics(bool budget) const
+{
+  return budget || (this->Mode == SCALAR_RANGE && !this->RangeSet);
+}
+
+//------------------------------------------------------------------------------
+void vtkSamplingDensity::CollectStatistics(vtkDataArray* array, vtkIdType begin, vtkIdType end,
+  const unsigned char* ghosts, vtkSamplingBudget& statistics) const
+{
+  StatisticsWorker worker;
+  if (!vtkArrayDispatch::Dispatch::Execute(
+        array, worker, begin, end, this->Component, ghosts, this->Function, statistics))
+  {
+    worker(array, begin, end, this->Component, ghosts, this->Function, statistics);
+  }
+}
+
+//------------------------------------------------------------------------------
+void vtkSamplingDensity::Finish(const vtkSamplingBudget* statistics, const char** note)
+{
+  if (note)
+  {
+    *note = nullptr;
+  }
+  this->Map = vtkSamplingBudget::Mapping();
+  if (this->Mode != SCALAR_RANGE)
+  {
+    return;
+  }
+  if (!this->RangeSet)
+  {
+    double range[2] = { 0.0, 0.0 };
+    if (!statistics || !statistics->GetRange(range))
+    {
+      this->Map.A = 0.0; // no finite value: nothing to sample
+      this->Map.B = 0.0;
+      return;
+    }
+    this->Range[0] = range[0];
+    this->Range[1] = range[1];
+  }
+  if (!(this->Range[1] > this->Range[0]))
+  {
+    // A single value is the top of its own range: uniform density.
+    this->Map.A = 0.0;
+    this->Map.B = 1.0;
+    if (note)
+    {
+      *note = "the scalar range has zero width: every voxel gets the same density";
+    }
+    return;
+  }
+  // Halved first, so that hi - lo cannot overflow (a range of +-1e308).
+  const double width = 0.5 * this->Range[1] - 0.5 * this->Range[0];
+  this->Map.A = 0.5 / width;
+  this->Map.B = -0.5 * this->Range[0] / width;
+}
+
+//------------------------------------------------------------------------------
+double vtkSamplingDensity::Fill(vtkDataArray* array, vtkIdType begin, vtkIdType end,
+  const unsigned char* ghosts, float* out) const
+{
+  FillWorker worker;
+  double sum = 0.0;
+  if (!vtkArrayDispatch::Dispatch::Execute(array, worker, begin, end, this->Component, ghosts,
+        this->Function, this->Scale, this->Map, out, sum))
+  {
+    worker(array, begin, end, this->Component, ghosts, this->Function, this->Scale, this->Map,
+      out, sum);
+  }
+  return sum;
+}

@@ -1,0 +1,100 @@
+// SPDX-FileCopyrightText: Copyright (c) 2025-2026 the BlueNoiseSampling contributors
+// SPDX-License-Identifier: BSD-3-Clause
+/**
+ * @class   vtkSamplingDensity
+ * @brief   How a sampler turns a point-data array into densities in [0, 1].
+ *
+ * For voxel values v (one component of the array, or the magnitude of its
+ * tuples for component -1) the density is g = clamp(s * (a x + b), 0, 1),
+ * with x = v for the IDENTITY (a = 1, b = 0) and SCALAR_RANGE mappings
+ * (a = 1 / (hi - lo), b = -lo a, [lo, hi] a chosen range or the finite range
+ * of the values) and x = f(v) for TRANSFER_FUNCTION (a piecewise function f;
+ * a = 1, b = 0). NaN gives 0, as does a voxel flagged DUPLICATEPOINT or
+ * HIDDENPOINT in the image's ghost array. The scale s is DensityScale, or the
+ * one that makes the expected number of points (the sum of g) a budget:
+ * CollectStatistics makes the one pass over the values that both the finite
+ * range and the budget need (vtkSamplingBudget), in parallel with vtkSMPTools.
+ *
+ * Edge cases: a range of zero width (a constant array) maps every value to
+ * x-density 1 (a = 0, b = 1): the volume is sampled uniformly. A range so wide
+ * that hi - lo overflows is mapped through values halved first. An array
+ * without finite values gives density 0 everywhere.
+ *
+ * The same object serves every layer of a run (and every slab of a streamed
+ * one): it is configured once, then FillLayer is called for each layer (from
+ * any one thread at a time).
+ */
+#ifndef vtkSamplingDensity_h
+#define vtkSamplingDensity_h
+
+#include "vtkFiltersBlueNoiseModule.h" // for export macro
+#include "vtkSamplingBudget.h"         // for vtkSamplingBudget::Mapping
+#include "vtkType.h"                   // for vtkIdType
+
+class vtkDataArray;
+class vtkPiecewiseFunction;
+
+class VTKFILTERSBLUENOISE_EXPORT vtkSamplingDensity
+{
+public:
+  enum Mappings
+  {
+    IDENTITY = 0,
+    SCALAR_RANGE = 1,
+    TRANSFER_FUNCTION = 2
+  };
+
+  /// mode: one of Mappings; component: >= 0, or -1 for the magnitude.
+  void SetMapping(int mode, int component, vtkPiecewiseFunction* function = nullptr);
+  int GetMapping() const { return this->Mode; }
+  int GetComponent() const { return this->Component; }
+
+  /// Whether the values must be counted before the densities are known:
+  /// for the finite range (SCALAR_RANGE without a set range) or a budget.
+  bool NeedsStatistics(bool budget) const;
+
+  /// SCALAR_RANGE with a chosen range (hi > lo, both finite).
+  void SetRange(double low, double high);
+  bool HasRange() const { return this->RangeSet; }
+  void GetRange(double range[2]) const;
+
+  /**
+   * Count the values of tuples [begin, end) of `array` into `statistics`
+   * (the transfer function already applied). Voxels whose ghost flag (if
+   * `ghosts`, indexed like the tuples) marks them as not owned are skipped.
+   */
+  void CollectStatistics(vtkDataArray* array, vtkIdType begin, vtkIdType end,
+    const unsigned char* ghosts, vtkSamplingBudget& statistics) const;
+
+  /**
+   * After the statistics (when needed): take the finite range from them
+   * (when no range is set) and fix the linear map. Returns the warning to
+   * give, if any (a constant array), in `note`.
+   */
+  void Finish(const vtkSamplingBudget* statistics, const char** note = nullptr);
+
+  /// The map from x to the unscaled density a x + b.
+  vtkSamplingBudget::Mapping GetLinearMap() const { return this->Map; }
+
+  void SetScale(double s) { this->Scale = s; }
+  double GetScale() const { return this->Scale; }
+
+  /**
+   * The densities of tuples [begin, end) in order into `out`; returns their
+   * sum. Ghost flags as in CollectStatistics.
+   */
+  double Fill(vtkDataArray* array, vtkIdType begin, vtkIdType end, const unsigned char* ghosts,
+    float* out) const;
+
+private:
+  int Mode = SCALAR_RANGE;
+  int Component = 0;
+  vtkPiecewiseFunction* Function = nullptr; // not owned: the caller keeps it alive
+  bool RangeSet = false;
+  double Range[2] = { 0.0, 1.0 };
+  vtkSamplingBudget::Mapping Map;
+  double PreScale = 1.0; // values are multiplied by it first (1, or 0.5 for huge ranges)
+  double Scale = 1.0;
+};
+
+#endif
