@@ -2,3 +2,4 @@
 # SPDX-License-Identifier: BSD-3-Clause
 # The point-set peers of the error-diffusion kernel.
 bluenoise_add_test(TestPoissonDiskKernel LABELS peers)
+bluenoise_add_test(TestWeightedSampleEliminationKernel LABELS peers)
