@@ -3,3 +3,4 @@
 # The point-set peers of the error-diffusion kernel.
 bluenoise_add_test(TestPoissonDiskKernel LABELS peers)
 bluenoise_add_test(TestWeightedSampleEliminationKernel LABELS peers)
+bluenoise_add_test(TestPeerKernelsBlueNoise LABELS peers spectrum)
