@@ -154,8 +154,10 @@ void vtkPoissonDiskKernel::Prepare()
   this->LevelOf.assign(static_cast<size_t>(voxels), 0);
   this->State.assign(static_cast<size_t>(voxels), 0);
   this->RowReach2.assign(static_cast<size_t>(extent[1]) * extent[2], 0.0f);
-  this->Order.clear();
   const float* density = this->Margin.GetDensity();
+  this->Order.clear();
+  this->Order.reserve(static_cast<size_t>(std::count_if(
+    density, density + voxels, [](float g) { return g > 0.0f && g < 1.0f; })));
   std::vector<double> subTargets(vtkVoxelMargin::NumberOfLevels, 0.0);
   for (vtkIdType v = 0; v < voxels; ++v)
   {
