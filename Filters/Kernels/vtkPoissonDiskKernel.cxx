@@ -28,9 +28,9 @@ struct vtkPoissonDiskKernel::Level
     double F = 0.0;
     bool Valid = false;
   };
-  double Target = 0.0; // sum of g of the level's voxels inside the volume
+  double Target = 0.0; // sum of g of the level's real voxels
   double Scale = InitialRadiusScale;
-  vtkIdType Count = 0; // the level's samples inside the volume in the last run
+  vtkIdType Count = 0; // the level's real samples in the last run
   Probe Low;
   Probe High;
   int LastSide = 0;
@@ -110,7 +110,8 @@ double vtkPoissonDiskKernel::GetPairDither(vtkIdType a, vtkIdType b) const
 //------------------------------------------------------------------------------
 double vtkPoissonDiskKernel::GetRadius(vtkIdType voxel) const
 {
-  return this->RadiusOf(this->Margin.ToExtended(voxel));
+  const vtkIdType v = this->Margin.ToExtended(voxel);
+  return this->Margin.IsReal(v) ? this->RadiusOf(v) : 0.0;
 }
 
 //------------------------------------------------------------------------------
@@ -167,7 +168,7 @@ void vtkPoissonDiskKernel::Prepare()
       this->Factor[v] = 1.0f / std::cbrt(g);
       this->LevelOf[v] = static_cast<std::uint16_t>(vtkVoxelMargin::DensityLevel(g));
       this->Order.push_back(v);
-      subTargets[this->LevelOf[v]] += this->Margin.IsInside(v) ? g : 0.0;
+      subTargets[this->LevelOf[v]] += this->Margin.IsReal(v) ? g : 0.0;
     }
   }
 
@@ -287,7 +288,7 @@ vtkIdType vtkPoissonDiskKernel::RunPass()
     }
     this->State[sample] = SampleBit;
     this->MarkConflicts(sample);
-    if (this->Margin.IsInside(sample))
+    if (this->Margin.IsReal(sample))
     {
       ++this->Levels[this->LevelOf[sample]].Count;
       ++count;

@@ -10,8 +10,9 @@
  * centers, so the points lie on the grid the blue-noise spectrum bins them on.
  *
  * Voxel classes (as in the error-diffusion kernel): g >= 1 is always a sample
- * and g <= 0 (NaN included) never; neither takes part in the conflicts below,
- * so a saturated region is full. The others (0 < g < 1) are the active voxels.
+ * and g <= 0 (NaN included) never; their own density takes no part in the
+ * conflicts below (near the support they stand in as virtual voxels, see
+ * Border). The others (0 < g < 1) are the active voxels.
  *
  * Definitions:
  * - Radius: r(v) = c(g(v)) * g(v)^(-1/3) in voxel units. The radius scale c
@@ -42,14 +43,18 @@
  *   64^3 at 8/255, this order gives a lower L (0.068) than an active-list
  *   (Bridson) growth over the same voxels (0.070) or than candidates jittered
  *   inside their voxels for the conflict test (0.070 to 0.078).
- * - Faces (ExtendFaces, default on): the volume is sampled with a margin of
- *   ceil(g_f^(-1/3)) voxels (at least one radius, c being below 1), g_f the
- *   smallest active density on its faces, in which each voxel takes the
- *   density of the nearest face voxel; the margin's samples are dropped
- *   (vtkVoxelMargin). Without it the first layer holds 1.5 times its share at
- *   16/255 and the mean anisotropy is 1.5 to 3.5 dB instead of 0; twice the
- *   margin changes nothing measurable. The rim of a region of g = 0 inside the
- *   volume has no such margin and is denser than the inside.
+ * - Border (ExtendSupport, default on): the kernel samples the volume
+ *   continued around its support (vtkVoxelMargin): a margin beyond the faces
+ *   and the empty and saturated voxels near the support become virtual active
+ *   voxels with the density of the nearest active voxel, at most about one
+ *   radius deep (g_f^(-1/3) voxels, g_f the smallest density there, c being
+ *   below 1; see vtkVoxelPointSetKernel for the limits). They take part in the
+ *   conflicts; their samples are dropped. Without it the first layer holds
+ *   1.5 times its share at 16/255, the mean anisotropy is 1.5 to 4.1 dB
+ *   instead of 0, and the voxels within 1.5 voxels of a region of g = 0 get
+ *   1.35 times their expected count (0.99 to 1.05 with it, the error-diffusion
+ *   kernel 1.02 to 1.05); a margin two or three times as wide changes L by
+ *   less than 1 %.
  * - Count: the active voxels are grouped into density levels
  *   (vtkVoxelMargin::DensityLevel, 8 per octave of g, merged upwards until a
  *   level expects MinimumLevelCount samples), each with its own c. On the grid
@@ -57,16 +62,16 @@
  *   not follow: with one c for all, the slabs of a ramp from g = 0.01 to 0.25
  *   miss their share by up to 15 %, with a c per level by 1 %. Each Sample()
  *   searches the c of every level at once by whole re-runs with the same order
- *   and dither, counting the samples inside the volume: c = 0.87 first, then
- *   per level steps of log(count / target) / 3 in log c (a maximal set in 3D
- *   has count ~ c^-3; at least 1 %, four times the last step while the count
- *   does not change: a plateau of the lattice) until its target is bracketed,
- *   then regula falsi in (log c, log count), bisecting where the count is
- *   flat. Only the levels off their target move (all of them when every level
- *   is on target but the total is not). A level is on target within
- *   max(CountTolerance, 0.5 / sqrt(target)) relative (the count of a maximal
- *   set itself varies by 0.3 to 0.5 sqrt(count) between seeds). The search
- *   stops when every level is on target and the total is within
+ *   and dither, counting the real samples: c = 0.87 first, then per level
+ *   steps of log(count / target) / 3 in log c (a maximal set in 3D has count
+ *   ~ c^-3; at least 1 %, four times the last step while the count does not
+ *   change: a plateau of the lattice) until its target is bracketed, then
+ *   regula falsi in (log c, log count), bisecting where the count is flat.
+ *   Only the levels off their target move (all of them when every level is on
+ *   target but the total is not). A level is on target within
+ *   max(CountTolerance, 0.5 / sqrt(target)) relative (between seeds the count
+ *   of a maximal set has a standard deviation of 0.3 to 0.5 sqrt(count)). The
+ *   search stops when every level is on target and the total is within
  *   CountTolerance of sum g, or after MaximumPasses runs; the run with the
  *   smallest sum of level misses is the result (re-run if it was not the
  *   last). A maximal set has at least one sample per group of mutually
@@ -77,9 +82,9 @@
  *
  * Cost: per run, one visit per active voxel plus about (4/3) pi r^3 voxels per
  * sample, i.e. O(voxels); 2 to 9 runs (6 on a constant 8/255, where the first
- * c lies on a plateau). Memory, per voxel of the extended volume: 4 bytes
- * (density copy), 4 (g^-1/3), 2 (level), 1 (state), and 8 per active voxel
- * (the order); 4 bytes per row.
+ * c lies on a plateau). Memory, per voxel of the extended volume: 5 bytes
+ * (density copy, virtual flag), 4 (g^-1/3), 2 (level), 1 (state), and 8 per
+ * active voxel (the order); 4 bytes per row.
  */
 #ifndef vtkPoissonDiskKernel_h
 #define vtkPoissonDiskKernel_h
@@ -124,7 +129,7 @@ public:
   ///@}
 
 protected:
-  /// The margin is g_f^(-1/3) voxels: at least one radius, c being below 1.
+  /// The reach g^(-1/3): at least one radius, c being below 1.
   double GetMarginFactor() const override { return 1.0; }
   bool Run(std::string* error) override;
   bool IsSample(vtkIdType v) const override;

@@ -27,15 +27,28 @@ vtkIdType vtkVoxelPointSetKernel::Sample(
     sum += density[v] > 0.0f ? std::min(density[v], 1.0f) : 0.0f;
   }
   this->ExpectedCount = sum; // the peers' searches use it
-  int margin = 0;
-  if (this->ExtendFaces)
+  // The reach at the smallest densities of the faces and of the border of
+  // the support (none where there is no active voxel).
+  int margin = 0, depth = 0;
+  if (this->ExtendSupport)
   {
-    const double reach = this->GetMarginFactor() /
-      std::cbrt(vtkVoxelMargin::SmallestFaceDensity(nx, ny, nz, density));
-    margin = static_cast<int>(
-      std::min(std::ceil(reach), static_cast<double>(std::max(nx, std::max(ny, nz)))));
+    auto reach = [this](float g) {
+      const double r = g < 1.0f ? std::ceil(this->GetMarginFactor() / std::cbrt(g)) : 0.0;
+      return static_cast<int>(std::min(r, 65536.0));
+    };
+    margin = reach(vtkVoxelMargin::SmallestFaceDensity(nx, ny, nz, density));
+    auto grown = [&](int m) {
+      return static_cast<double>(nx + 2 * m) * (ny + 2 * m) * (nz + 2 * m);
+    };
+    while (margin > 0 && grown(margin) > MaximumGrowth * static_cast<double>(voxels))
+    {
+      --margin;
+    }
+    depth = std::min(
+      reach(vtkVoxelMargin::SmallestBorderDensity(nx, ny, nz, density)), MaximumDepth);
+    depth = std::max(depth, margin);
   }
-  this->Margin.Extend(nx, ny, nz, density, margin);
+  this->Margin.Extend(nx, ny, nz, density, margin, depth);
   if (!this->Run(error))
   {
     return -1;

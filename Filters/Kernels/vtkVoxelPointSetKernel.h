@@ -14,12 +14,19 @@
  * What Sample() does for every peer: it checks the input (each dimension at
  * least 1, no null pointer; else -1, the reason in `error`, the mask
  * untouched), sums the expected count (sum of g clamped to [0, 1], NaN as 0),
- * copies the volume with a margin beyond its faces (vtkVoxelMargin; the
- * margin is ceil(GetMarginFactor() * g_f^(-1/3)) voxels per side, g_f the
- * smallest active density on the faces, and 0 with SetExtendFaces(false)),
- * lets the peer run on that copy, and writes the mask: g >= 1 always a sample,
- * g <= 0 (or NaN) never, the others as the peer decided. It returns the
- * number of samples.
+ * copies the volume continued around its support (vtkVoxelMargin), lets the
+ * peer run on that copy, and writes the mask: g >= 1 always a sample, g <= 0
+ * (or NaN) never, the others as the peer decided. It returns the number of
+ * samples.
+ *
+ * The continuation (ExtendSupport, default on) reaches the peer's interaction
+ * reach at the smallest density where it is needed, GetMarginFactor() *
+ * g^(-1/3) rounded up: the margin beyond the faces takes g from the smallest
+ * active density on the faces, reduced until the extended volume holds at
+ * most MaximumGrowth times the voxels (so a thin slab or a very sparse face
+ * gets less than one reach, or none); the depth of the continuation into empty
+ * and saturated voxels takes g from the smallest density on the border of the
+ * support, at most MaximumDepth voxels, and at least the margin.
  */
 #ifndef vtkVoxelPointSetKernel_h
 #define vtkVoxelPointSetKernel_h
@@ -34,14 +41,19 @@
 class VTKFILTERSBLUENOISE_EXPORT vtkVoxelPointSetKernel
 {
 public:
+  /// The extended volume holds at most this many times the voxels of the volume.
+  static constexpr double MaximumGrowth = 2.0;
+  /// The continuation into empty and saturated voxels reaches at most this far.
+  static constexpr int MaximumDepth = 32;
+
   virtual ~vtkVoxelPointSetKernel();
 
   void SetSeed(std::uint64_t seed) { this->Seed = seed; }
   std::uint64_t GetSeed() const { return this->Seed; }
 
-  /// Sample a margin beyond the faces and drop it (default on).
-  void SetExtendFaces(bool on) { this->ExtendFaces = on; }
-  bool GetExtendFaces() const { return this->ExtendFaces; }
+  /// Sample the volume continued around its support and drop the continuation (default on).
+  void SetExtendSupport(bool on) { this->ExtendSupport = on; }
+  bool GetExtendSupport() const { return this->ExtendSupport; }
 
   /**
    * Sample nx * ny * nz densities (x fastest) into mask (as many bytes).
@@ -59,7 +71,7 @@ public:
 protected:
   vtkVoxelPointSetKernel() = default;
 
-  /// The margin in units of g_f^(-1/3): the peer's interaction reach at density 1.
+  /// The peer's interaction reach at density 1: its reach at g is this * g^(-1/3).
   virtual double GetMarginFactor() const = 0;
 
   /// Sample this->Margin's volume; false with the reason in `error` on failure.
@@ -69,7 +81,7 @@ protected:
   virtual bool IsSample(vtkIdType v) const = 0;
 
   std::uint64_t Seed = 0;
-  bool ExtendFaces = true;
+  bool ExtendSupport = true;
   double ExpectedCount = 0.0;
   vtkVoxelMargin Margin;
 

@@ -51,10 +51,9 @@ bool vtkWeightedSampleEliminationKernel::Run(std::string* error)
   std::vector<double> levelSums(vtkVoxelMargin::NumberOfLevels, 0.0);
   for (vtkIdType v = 0; v < this->Margin.GetNumberOfVoxels(); ++v)
   {
-    const float g = density[v];
-    if (g > 0.0f && g < 1.0f && this->Margin.IsInside(v))
+    if (this->Margin.IsReal(v))
     {
-      levelSums[vtkVoxelMargin::DensityLevel(g)] += g;
+      levelSums[vtkVoxelMargin::DensityLevel(density[v])] += density[v];
     }
   }
   double active = 0.0;
@@ -63,8 +62,8 @@ bool vtkWeightedSampleEliminationKernel::Run(std::string* error)
     active += sum;
   }
   const auto target = static_cast<vtkIdType>(std::llround(active));
-  const vtkIdType inside = this->DrawCandidates(target);
-  if (inside < 0)
+  const vtkIdType real = this->DrawCandidates(target);
+  if (real < 0)
   {
     if (error)
     {
@@ -72,7 +71,7 @@ bool vtkWeightedSampleEliminationKernel::Run(std::string* error)
     }
     return false;
   }
-  const double ratio = inside > 0 ? static_cast<double>(target) / static_cast<double>(inside) : 1.0;
+  const double ratio = real > 0 ? static_cast<double>(target) / static_cast<double>(real) : 1.0;
   this->LimitFraction = this->WeightLimiting ? Beta * (1.0 - std::pow(ratio, Gamma)) : 0.0;
   this->SetLevelTargets(levelSums);
   this->ComputeWeights();
@@ -89,26 +88,26 @@ vtkIdType vtkWeightedSampleEliminationKernel::DrawCandidates(vtkIdType target)
   random.Seed(this->Seed, 0xda3e39cb94b95bdbULL);
   const auto k = static_cast<float>(this->CandidateRatio);
   this->Voxel.clear();
-  vtkIdType inside = 0;
+  vtkIdType real = 0; // candidates on real voxels
   for (vtkIdType v = 0; v < voxels; ++v)
   {
     const float g = density[v];
     if (g > 0.0f && g < 1.0f && random.Uniform() < std::min(1.0f, k * g))
     {
       this->Voxel.push_back(v);
-      inside += this->Margin.IsInside(v) ? 1 : 0;
+      real += this->Margin.IsReal(v) ? 1 : 0;
     }
   }
-  if (inside < target)
+  if (real < target)
   {
     this->Voxel.clear();
-    inside = 0;
+    real = 0;
     for (vtkIdType v = 0; v < voxels; ++v)
     {
       if (density[v] > 0.0f && density[v] < 1.0f)
       {
         this->Voxel.push_back(v);
-        inside += this->Margin.IsInside(v) ? 1 : 0;
+        real += this->Margin.IsReal(v) ? 1 : 0;
       }
     }
   }
@@ -130,9 +129,9 @@ vtkIdType vtkWeightedSampleEliminationKernel::DrawCandidates(vtkIdType target)
   {
     const vtkIdType v = this->Voxel[i];
     this->Owner[v] = static_cast<std::int32_t>(i);
-    // Candidates of the margin have no level: they are never kept for one.
+    // Virtual candidates have no level: they are never kept for one.
     this->LevelOf[i] = -1;
-    if (this->Margin.IsInside(v))
+    if (this->Margin.IsReal(v))
     {
       this->LevelOf[i] = static_cast<std::int16_t>(vtkVoxelMargin::DensityLevel(density[v]));
       ++this->Surplus[this->LevelOf[i]];
@@ -144,7 +143,7 @@ vtkIdType vtkWeightedSampleEliminationKernel::DrawCandidates(vtkIdType target)
     float& row = this->RowReach2[v / extent[0]];
     row = std::max(row, std::nextafter(static_cast<float>(reach * reach), HUGE_VALF));
   }
-  return inside;
+  return real;
 }
 
 //------------------------------------------------------------------------------
@@ -257,9 +256,9 @@ void vtkWeightedSampleEliminationKernel::ComputeWeights()
 //------------------------------------------------------------------------------
 void vtkWeightedSampleEliminationKernel::Eliminate()
 {
-  // Candidates of the margin go in weight order too; those inside go while
-  // their level has more than its target, and are kept (they leave the heap
-  // but still weigh on their neighbours) once it has not.
+  // Virtual candidates go in weight order too; real ones go while their level
+  // has more than its target, and are kept (they leave the heap but still
+  // weigh on their neighbours) once it has not.
   while (this->Remaining > 0)
   {
     const int e = this->Heap[0].Candidate;

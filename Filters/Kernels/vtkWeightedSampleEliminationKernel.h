@@ -10,28 +10,33 @@
  * Generating Poisson Disk Sample Sets", Computer Graphics Forum 34(2), 2015.
  *
  * Voxel classes (as in the error-diffusion kernel): g >= 1 is always a sample
- * and g <= 0 (NaN included) never; neither is a candidate nor weighs on one.
- * The others (0 < g < 1) are the active voxels; S is the sum of their g and
- * T = round(S) of them are kept, so the count is the number of saturated
- * voxels plus T (round(sum of g) up to the rounding of S alone).
+ * and g <= 0 (NaN included) never; neither is a candidate (near the support
+ * they stand in as virtual voxels, see Border). The others (0 < g < 1) are the
+ * active voxels; S is the sum of their g and T = round(S) of them are kept, so
+ * the count is the number of saturated voxels plus T (round(sum of g) up to
+ * the rounding of S alone).
  *
  * Definitions:
- * - Faces (ExtendFaces, default on): the volume is continued by a margin of
- *   ceil(2 r_f) voxels, r_f the radius below at the smallest active density on
- *   the faces, each margin voxel taking the density of the nearest face voxel
- *   (vtkVoxelMargin). Candidates are drawn and eliminated on the whole
- *   extended grid and the margin is dropped at the end. Without it candidates
- *   near a face have fewer neighbours, keep lower weights and survive more
- *   often (the first layer holds 1.4 times its share at 32/255 on 64^3, the
- *   mean anisotropy is 2 to 3.6 dB instead of 0); reflecting the candidates at
- *   the faces instead empties the first layer, each candidate there being 1
- *   voxel from its own image.
+ * - Border (ExtendSupport, default on): the kernel samples the volume
+ *   continued around its support (vtkVoxelMargin): a margin beyond the faces
+ *   and the empty and saturated voxels near the support become virtual active
+ *   voxels with the density of the nearest active voxel, about one reach 2 r
+ *   deep (r below at the smallest density there; see vtkVoxelPointSetKernel
+ *   for the limits). Their candidates are drawn, weigh and are eliminated like
+ *   the others, but count for no target and are dropped at the end. Without
+ *   it candidates near a face have fewer neighbours, keep lower weights and
+ *   survive more often (the first layer holds 1.4 times its share at 32/255
+ *   on 64^3, the mean anisotropy is 2 to 4.7 dB instead of 0, and the voxels
+ *   within 1.5 voxels of a region of g = 0 get 1.33 times their expected
+ *   count, 1.00 to 1.03 with it); reflecting the candidates at the faces
+ *   instead empties the first layer, each candidate there being 1 voxel from
+ *   its own image.
  * - Candidates: active voxel v is a candidate iff u_v < min(1, k g(v)), u_v
  *   uniform from a PCG32 stream seeded with Seed, drawn in index order of the
  *   extended grid, k = CandidateRatio (default 5): white noise proportional to
  *   the density, at most one candidate per voxel, about k T of them in the
- *   volume. Should fewer than T be drawn inside (small volumes), every active
- *   voxel is a candidate.
+ *   volume. Should fewer than T real candidates be drawn (small volumes),
+ *   every active voxel is a candidate.
  * - Radius (the paper's r_max for the local density, in voxel units): the
  *   densest packing of spheres of radius r leaves 4 sqrt(2) r^3 of volume per
  *   sphere, so r(v) = (1 / (4 sqrt(2) g(v)))^(1/3).
@@ -39,7 +44,7 @@
  *   with D = 2 min(r_i, r_j) and d^ = max(d, delta D),
  *     w_ij = (1 - d^ / D)^8 if d < D, else 0,
  *   with the paper's weight limiting delta = 0.65 (1 - (T / M)^1.5), M the
- *   number of candidates inside the volume (delta = 0 with
+ *   number of real candidates (delta = 0 with
  *   SetWeightLimiting(false)). In constant density D = 2 r_max, the paper's
  *   weight. The smaller radius governs a pair so that every partner of i lies
  *   within 2 r_i: neighbourhoods are found from each candidate's own radius and
@@ -54,9 +59,9 @@
  *   the levels in order of g, so the targets add up to T (a level with fewer
  *   candidates passes the difference to the next one). A candidate whose level
  *   has reached its target is kept instead of eliminated (it leaves the heap
- *   and still weighs on its neighbours); candidates of the margin have no
- *   target. It ends when every level is at its target, so the count is exact
- *   by construction. The levels make the density follow g: on the grid the
+ *   and still weighs on its neighbours); virtual candidates have no target.
+ *   It ends when every level is at its target, so the count is exact by
+ *   construction. The levels make the density follow g: on the grid the
  *   final weights at which a density stops losing candidates depend on g in
  *   steps (which lattice distances fall below D), and a single global
  *   elimination leaves the slabs of a ramp from g = 0.01 to 0.25 up to 27 %
@@ -64,15 +69,15 @@
  *   the paper's algorithm.
  *
  * Output: mask[v] = 1 for the samples, 0 elsewhere. Same seed, same densities
- * => same mask. The rim of a region of g = 0 inside the volume has no margin:
- * its candidates have fewer neighbours and the rim is denser than the inside.
+ * => same mask.
  *
  * Cost: one pass over the voxels to draw the candidates, then two scans of the
  * ball of radius 2 r around each candidate (weights, then elimination):
  * (4/3) pi (2 r)^3 k g = 5.9 k voxel visits per voxel for each, plus
  * O(M log M) for the heap, whose updates (random memory accesses) take most of
- * the time. Memory, per voxel of the extended volume: 4 bytes (density copy)
- * and 4 (the candidate of each voxel); about 40 bytes per candidate.
+ * the time. Memory, per voxel of the extended volume: 5 bytes (density copy,
+ * virtual flag) and 4 (the candidate of each voxel); about 40 bytes per
+ * candidate; 4 bytes per row.
  */
 #ifndef vtkWeightedSampleEliminationKernel_h
 #define vtkWeightedSampleEliminationKernel_h
@@ -104,11 +109,11 @@ public:
   void SetWeightLimiting(bool on) { this->WeightLimiting = on; }
   bool GetWeightLimiting() const { return this->WeightLimiting; }
 
-  /// Candidates of the last successful Sample(), margin included.
+  /// Candidates of the last successful Sample(), virtual ones included.
   vtkIdType GetNumberOfCandidates() const { return this->Candidates; }
 
 protected:
-  /// The margin is 2 r_f = 2 (4 sqrt(2))^(-1/3) g_f^(-1/3) voxels: one reach.
+  /// The reach 2 r = 2 (4 sqrt(2))^(-1/3) g^(-1/3).
   double GetMarginFactor() const override;
   /// Fails with 2^31 candidates or more.
   bool Run(std::string* error) override;
@@ -142,7 +147,7 @@ private:
   std::vector<vtkIdType> Voxel;        // voxel of each candidate
   std::vector<float> Radius;           // r of each candidate
   std::vector<std::uint32_t> Priority; // random tie-break of each candidate
-  std::vector<std::int16_t> LevelOf;   // density level of each candidate inside, -1 in the margin
+  std::vector<std::int16_t> LevelOf;   // density level of each real candidate, -1 if virtual
   std::vector<Node> Heap;              // max-heap of the candidates that may still go
   std::vector<std::int32_t> Position;  // each candidate's place in Heap, -1 once out
   std::vector<vtkIdType> Surplus;      // candidates each level has beyond its target

@@ -13,6 +13,7 @@
 #include <algorithm>
 #include <cmath>
 #include <functional>
+#include <iostream>
 #include <limits>
 #include <string>
 #include <vector>
@@ -162,6 +163,45 @@ void CheckDeterminism(const char* name, const Volume& volume)
   Run(other, volume, c);
   Check(a == b, std::string(name) + ": the same seed gives the same samples");
   Check(a != c, std::string(name) + ": another seed gives other samples");
+}
+
+/**
+ * A ball of g = 16/255 (radius 0.4 n) in an empty n^3 cube: the count within
+ * 1.5 voxels of the empty region against its sum of g (1.35 when the support
+ * is not continued), which must be within `tolerance`.
+ */
+template <typename Kernel>
+void CheckRim(const char* name, int n, double tolerance)
+{
+  const double center = (n - 1) / 2.0, radius = 0.4 * n;
+  auto depth = [=](int x, int y, int z) {
+    return radius -
+      std::sqrt((x - center) * (x - center) + (y - center) * (y - center) +
+        (z - center) * (z - center));
+  };
+  const Volume ball = MakeDensity(
+    n, n, n, [&](int x, int y, int z) { return depth(x, y, z) > 0.0 ? 16.0f / 255.0f : 0.0f; });
+  Kernel kernel;
+  std::vector<unsigned char> mask;
+  Run(kernel, ball, mask);
+  double expected = 0.0, count = 0.0;
+  vtkIdType v = 0;
+  for (int z = 0; z < n; ++z)
+  {
+    for (int y = 0; y < n; ++y)
+    {
+      for (int x = 0; x < n; ++x, ++v)
+      {
+        const bool rim = depth(x, y, z) > 0.0 && depth(x, y, z) < 1.5;
+        expected += rim ? ball.Density[v] : 0.0;
+        count += rim ? mask[v] : 0;
+      }
+    }
+  }
+  std::cout << name << ": the rim of the support gets " << count / expected
+            << " of its expected count" << std::endl;
+  Check(std::abs(count / expected - 1.0) < tolerance,
+    std::string(name) + ": rim count ratio " + Str(count / expected));
 }
 
 /**

@@ -61,7 +61,7 @@ void CheckConflictRule(const char* what, const Volume& volume, bool extendFaces)
 {
   vtkPoissonDiskKernel kernel;
   kernel.SetSeed(9);
-  kernel.SetExtendFaces(extendFaces);
+  kernel.SetExtendSupport(extendFaces);
   std::vector<unsigned char> mask;
   Run(kernel, volume, mask);
   const int nx = volume.Dims[0], ny = volume.Dims[1], nz = volume.Dims[2];
@@ -135,6 +135,7 @@ int main()
             << std::endl;
   Check(deviation < 0.04, "ramp: each slab within 4 % of its sum of g");
 
+  CheckRim<vtkPoissonDiskKernel>("vtkPoissonDiskKernel", 64, 0.07);
   CheckEmptyAndSaturated<vtkPoissonDiskKernel>("vtkPoissonDiskKernel", mask);
   CheckDeterminism<vtkPoissonDiskKernel>("vtkPoissonDiskKernel", MakeRamp(32));
   CheckBadInput<vtkPoissonDiskKernel>("vtkPoissonDiskKernel");

@@ -58,7 +58,7 @@ void CheckExactCounts(std::vector<unsigned char>& mask)
       vtkWeightedSampleEliminationKernel kernel;
       kernel.SetSeed(static_cast<std::uint64_t>(options));
       kernel.SetWeightLimiting((options & 1) == 0);
-      kernel.SetExtendFaces((options & 2) == 0);
+      kernel.SetExtendSupport((options & 2) == 0);
       kernel.SetCandidateRatio((options & 4) ? 2.0 : 5.0);
       const vtkIdType n = Run(kernel, c.Density, mask);
       const std::string what = std::string(c.What) + ", options " + Str(options);
@@ -82,19 +82,20 @@ int main()
   // About 5 candidates per sample inside the volume, more with the margin.
   vtkWeightedSampleEliminationKernel kernel;
   const Volume constant = MakeConstantDensity(40, 8.0f / 255.0f);
-  kernel.SetExtendFaces(false);
+  kernel.SetExtendSupport(false);
   Run(kernel, constant, mask);
   const double ratio = static_cast<double>(kernel.GetNumberOfCandidates()) / Target(constant);
   Check(std::abs(ratio - 5.0) < 0.15, "5 candidates per sample, got " + Str(ratio));
 
   const Volume ramp = MakeRamp(64);
-  kernel.SetExtendFaces(true);
+  kernel.SetExtendSupport(true);
   Run(kernel, ramp, mask);
   const double deviation = RampDeviation(ramp, mask, 8);
   std::cout << "ramp: largest deviation of an 8-layer slab " << 100.0 * deviation << " %"
             << std::endl;
   Check(deviation < 0.04, "ramp: each slab within 4 % of its sum of g");
 
+  CheckRim<vtkWeightedSampleEliminationKernel>("vtkWeightedSampleEliminationKernel", 64, 0.07);
   CheckEmptyAndSaturated<vtkWeightedSampleEliminationKernel>(
     "vtkWeightedSampleEliminationKernel", mask);
   CheckDeterminism<vtkWeightedSampleEliminationKernel>(
