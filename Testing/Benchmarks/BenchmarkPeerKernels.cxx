@@ -99,6 +99,16 @@ void BM_ErrorDiffusion(benchmark::State& state)
     true);
 }
 
+// The cubes and levels, the same for every kernel.
+void Cases(benchmark::internal::Benchmark* b)
+{
+  b->ArgNames({ "L", "g255" })
+    ->ArgsProduct({ { 64, 128 }, { 8, 32 } })
+    ->UseRealTime()
+    ->ComputeStatistics("min", Fastest)
+    ->Unit(benchmark::kMillisecond);
+}
+
 template <typename Kernel>
 void BM_Peer(benchmark::State& state)
 {
@@ -112,22 +122,7 @@ void BM_Peer(benchmark::State& state)
 }
 }
 
-BENCHMARK(BM_ErrorDiffusion)
-  ->ArgNames({ "L", "g255" })
-  ->ArgsProduct({ { 64, 128 }, { 8, 32 } })
-  ->UseRealTime()
-  ->ComputeStatistics("min", Fastest)
-  ->Unit(benchmark::kMillisecond);
-BENCHMARK_TEMPLATE(BM_Peer, vtkPoissonDiskKernel)
-  ->ArgNames({ "L", "g255" })
-  ->ArgsProduct({ { 64, 128 }, { 8, 32 } })
-  ->UseRealTime()
-  ->ComputeStatistics("min", Fastest)
-  ->Unit(benchmark::kMillisecond);
-BENCHMARK_TEMPLATE(BM_Peer, vtkWeightedSampleEliminationKernel)
-  ->ArgNames({ "L", "g255" })
-  ->ArgsProduct({ { 64, 128 }, { 8, 32 } })
-  ->UseRealTime()
-  ->ComputeStatistics("min", Fastest)
-  ->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_ErrorDiffusion)->Apply(Cases);
+BENCHMARK_TEMPLATE(BM_Peer, vtkPoissonDiskKernel)->Apply(Cases);
+BENCHMARK_TEMPLATE(BM_Peer, vtkWeightedSampleEliminationKernel)->Apply(Cases);
 BENCHMARK_MAIN();

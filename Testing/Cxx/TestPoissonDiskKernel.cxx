@@ -127,14 +127,7 @@ int main()
   CheckConflictRule("graded, whole grid", graded, false);
   CheckConflictRule("graded, with margin", graded, true);
 
-  const Volume ramp = MakeRamp(64);
-  vtkPoissonDiskKernel kernel;
-  Run(kernel, ramp, mask);
-  const double deviation = RampDeviation(ramp, mask, 8);
-  std::cout << "ramp: largest deviation of an 8-layer slab " << 100.0 * deviation << " %"
-            << std::endl;
-  Check(deviation < 0.04, "ramp: each slab within 4 % of its sum of g");
-
+  CheckRamp<vtkPoissonDiskKernel>("vtkPoissonDiskKernel", 0.04);
   CheckRim<vtkPoissonDiskKernel>("vtkPoissonDiskKernel", 64, 0.07);
   CheckEmptyAndSaturated<vtkPoissonDiskKernel>("vtkPoissonDiskKernel", mask);
   CheckDeterminism<vtkPoissonDiskKernel>("vtkPoissonDiskKernel", MakeRamp(32));
