@@ -53,7 +53,7 @@
  * - Elimination: W_i = sum of w_ij over the other candidates. The candidate
  *   with the largest W (ties: a random priority per candidate, then the lower
  *   number; many weights tie exactly on the lattice) leaves, and its w_ij are
- *   subtracted from the W of its partners (indexed binary max-heap). Every
+ *   subtracted from the W of its partners (indexed 4-ary max-heap). Every
  *   density level (vtkVoxelMargin::DensityLevel, 8 per octave of g) has its
  *   own target: round(cumulative S) minus round(previous cumulative S) over
  *   the levels in order of g, so the targets add up to T (a level with fewer
