@@ -1,0 +1,93 @@
+// SPDX-FileCopyrightText: Copyright (c) 2025-2026 the BlueNoiseSampling contributors
+// SPDX-License-Identifier: BSD-3-Clause
+/**
+ * @class   vtkVoxelPointSetKernel
+ * @brief   Base of the point-set peers of error diffusion: a whole density volume in, a mask out.
+ *
+ * The peers (vtkPoissonDiskKernel, vtkWeightedSampleEliminationKernel) take
+ * the volume at once, where vtkErrorDiffusionKernel takes it layer by layer:
+ * Sample() receives nx * ny * nz densities g in [0, 1] (x fastest, index
+ * x + nx * (y + ny * z)) and fills a mask of as many bytes with 1 for the
+ * sample voxels and 0 elsewhere. A sampler can hold either peer through this
+ * class.
+ *
+ * What Sample() does for every peer: it checks the input (each dimension at
+ * least 1, no null pointer; else -1, the reason in `error`, the mask
+ * untouched), sums the expected count (sum of g clamped to [0, 1], NaN as 0),
+ * copies the volume continued around its support (vtkVoxelMargin), lets the
+ * peer run on that copy, and writes the mask: g >= 1 always a sample, g <= 0
+ * (or NaN) never, the others as the peer decided. It returns the number of
+ * samples.
+ *
+ * The continuation (ExtendSupport, default on) reaches the peer's interaction
+ * reach at the smallest density where it is needed, GetMarginFactor() *
+ * g^(-1/3) rounded up: the margin beyond the faces takes g from the smallest
+ * active density on the faces, reduced until the extended volume holds at
+ * most MaximumGrowth times the voxels (so a thin slab or a very sparse face
+ * gets less than one reach, or none); the depth of the continuation into empty
+ * and saturated voxels takes g from the smallest density on the border of the
+ * support, at most MaximumDepth voxels, and at least the margin.
+ */
+#ifndef vtkVoxelPointSetKernel_h
+#define vtkVoxelPointSetKernel_h
+
+#include "vtkFiltersBlueNoiseModule.h" // for export macro
+#include "vtkType.h"                   // for vtkIdType
+#include "vtkVoxelMargin.h"            // for the member
+
+#include <cstdint>
+#include <string>
+
+class VTKFILTERSBLUENOISE_EXPORT vtkVoxelPointSetKernel
+{
+public:
+  /// The extended volume holds at most this many times the voxels of the volume.
+  static constexpr double MaximumGrowth = 2.0;
+  /// The continuation into empty and saturated voxels reaches at most this far.
+  static constexpr int MaximumDepth = 32;
+
+  virtual ~vtkVoxelPointSetKernel();
+
+  void SetSeed(std::uint64_t seed) { this->Seed = seed; }
+  std::uint64_t GetSeed() const { return this->Seed; }
+
+  /// Sample the volume continued around its support and drop the continuation (default on).
+  void SetExtendSupport(bool on) { this->ExtendSupport = on; }
+  bool GetExtendSupport() const { return this->ExtendSupport; }
+
+  /**
+   * Sample nx * ny * nz densities (x fastest) into mask (as many bytes).
+   * Returns the number of samples, or -1 with the reason in `error`.
+   */
+  vtkIdType Sample(int nx, int ny, int nz, const float* density, unsigned char* mask,
+    std::string* error = nullptr);
+
+  ///@{
+  /// Figures of the last Sample() that got past the input check.
+  double GetExpectedCount() const { return this->ExpectedCount; } ///< sum of g
+  int GetMargin() const { return this->Margin.GetMargin(); }      ///< voxels per side
+  ///@}
+
+protected:
+  vtkVoxelPointSetKernel() = default;
+
+  /// The peer's interaction reach at density 1: its reach at g is this * g^(-1/3).
+  virtual double GetMarginFactor() const = 0;
+
+  /// Sample this->Margin's volume; false with the reason in `error` on failure.
+  virtual bool Run(std::string* error) = 0;
+
+  /// Whether active voxel v of the extended grid is a sample after Run().
+  virtual bool IsSample(vtkIdType v) const = 0;
+
+  std::uint64_t Seed = 0;
+  bool ExtendSupport = true;
+  double ExpectedCount = 0.0;
+  vtkVoxelMargin Margin;
+
+private:
+  vtkVoxelPointSetKernel(const vtkVoxelPointSetKernel&) = delete;
+  vtkVoxelPointSetKernel& operator=(const vtkVoxelPointSetKernel&) = delete;
+};
+
+#endif
