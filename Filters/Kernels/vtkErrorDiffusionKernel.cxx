@@ -88,6 +88,15 @@ inline float vtkErrorDiffusionKernel::Generator::Uniform()
 }
 
 //------------------------------------------------------------------------------
+// The random numbers of a layer depend on the seed and the layer's global
+// index only: pieces and slabs of a volume draw what the whole volume would.
+void vtkErrorDiffusionKernel::SeedLayer(int layer)
+{
+  const auto z = static_cast<std::uint64_t>(static_cast<std::int64_t>(layer));
+  this->Random.Seed(this->Seed, 0x9e3779b97f4a7c15ULL ^ (z * 0xD1B54A32D192ED03ULL));
+}
+
+//------------------------------------------------------------------------------
 vtkErrorDiffusionKernel::vtkErrorDiffusionKernel()
   : Table(vtkErrorDiffusionParameterTable::Paper())
 {
@@ -147,7 +156,6 @@ void vtkErrorDiffusionKernel::Begin(int nx, int ny, int firstLayer)
   const size_t layer = static_cast<size_t>(this->NX) * static_cast<size_t>(this->NY);
   this->Current.assign(layer, 0.0f);
   this->Next.assign(layer, 0.0f);
-  this->Random.Seed(this->Seed, 0x9e3779b97f4a7c15ULL);
   // The table or the scale may have changed since the last run.
   this->ParameterTable.assign(ParameterEntries, LevelParameters());
   if (this->Method == METHOD_ERROR_DIFFUSION && this->FixedCharge < 0.0f)
@@ -253,6 +261,7 @@ vtkIdType vtkErrorDiffusionKernel::ProcessLayer(
   }
   if (this->Method == METHOD_WHITE_NOISE)
   {
+    this->SeedLayer(this->FirstLayer + this->LayersDone);
     return this->DrawLayerIndependently(density, mask);
   }
   if (this->LayersDone == 0 && !this->WarmedUp)
@@ -491,6 +500,7 @@ vtkIdType vtkErrorDiffusionKernel::ScanLayer(
     reservoir.Remaining = currentActive ? static_cast<vtkIdType>(layerSize) : CountActive(density, layerSize);
   }
   const LayerScan s = GetLayerScan(this->NX, this->NY, layer);
+  this->SeedLayer(layer);
   float* cur = this->Current.data();
   float* nxt = this->Next.data();
   const vtkIdType V = s.VStride;

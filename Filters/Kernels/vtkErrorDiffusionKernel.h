@@ -26,7 +26,9 @@
  * m(g) come from a vtkErrorDiffusionParameterTable.
  *
  * Threshold: t = 0.5 - C(g) + s * r * m(g) with r uniform in [0, 1) from a
- * seeded PCG32 generator (one number per active voxel, in scan order), s the
+ * PCG32 generator (one number per active voxel, in scan order; each layer's
+ * stream is chosen by the seed and the layer's global z index, so pieces and
+ * slabs of a volume draw the numbers the whole volume draws), s the
  * ModulationScale (s = 1 is the paper's Eq. 1; s = 0.5, the default, is Zhou
  * and Fang's 0..255 code) and C(g) the steady-state charge of the paper's
  * process (vtkErrorDiffusionChargeCurve). Lowering the paper's threshold
@@ -223,6 +225,7 @@ private:
     vtkIdType v, void* reservoir);
   vtkIdType DrawLayerIndependently(const float* density, unsigned char* mask);
   void EndLayer();
+  void SeedLayer(int layer);
 
   vtkErrorDiffusionParameterTable Table;
   double ModulationScale = 0.5;

@@ -129,6 +129,7 @@ public:
   std::vector<Step> Steps;
   size_t Current = 0;
   bool Running = false;
+  bool NeedsStatistics = false; // every piece takes part, even one without layers
 
   // The run.
   vtkSamplingDensity Density;
@@ -281,7 +282,8 @@ int vtkErrorDiffusionSampler::RequestUpdateExtent(
     {
       probe.SetRange(this->ScalarRange[0], this->ScalarRange[1]);
     }
-    if (!emptyPiece && probe.NeedsStatistics(this->UseNumberOfPoints))
+    run.NeedsStatistics = probe.NeedsStatistics(this->UseNumberOfPoints);
+    if (run.NeedsStatistics)
     {
       int first = 0, last = -1;
       this->GetStatisticsLayers(run.Whole, piece, pieces, first, last);
@@ -486,13 +488,12 @@ bool vtkErrorDiffusionSampler::CollectStatistics(
 bool vtkErrorDiffusionSampler::FinishStatistics()
 {
   vtkInternals& run = *this->Internals;
-  const bool counted = !run.Steps.empty() && run.Steps.front().Statistics;
-  if (counted && !this->ReduceStatistics(run.Statistics))
+  if (run.NeedsStatistics && !this->ReduceStatistics(run.Statistics))
   {
     return false;
   }
   const char* note = nullptr;
-  run.Density.Finish(counted ? &run.Statistics : nullptr, &note);
+  run.Density.Finish(run.NeedsStatistics ? &run.Statistics : nullptr, &note);
   if (note)
   {
     vtkWarningMacro("Density: " << note << ".");
@@ -705,7 +706,7 @@ bool vtkErrorDiffusionSampler::Advance(vtkImageData* input, vtkInformationVector
     }
     ++run.Current;
   }
-  if (run.Current == first)
+  if (run.Current == first && run.Current < run.Steps.size())
   {
     int need[6];
     run.StepExtent(run.Steps[run.Current], need);
@@ -745,12 +746,10 @@ int vtkErrorDiffusionSampler::RequestData(
   {
     output->Initialize();
     mask->Initialize();
-    if (run.SampledLayers() == 0 || run.NX() <= 0 || run.NY() <= 0)
+    // A piece without layers (more pieces than layers) samples nothing, but
+    // still takes part in what the pieces share (ReduceStatistics).
+    if (!run.Piece && (run.SampledLayers() == 0 || run.NX() <= 0 || run.NY() <= 0))
     {
-      if (run.Piece)
-      {
-        return fail(1); // more pieces than layers: this one has nothing to sample
-      }
       vtkErrorMacro("The input image has an empty extent: nothing to sample.");
       return fail(0);
     }
