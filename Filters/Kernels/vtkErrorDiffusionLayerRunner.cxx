@@ -5,13 +5,10 @@
 #include "vtkErrorDiffusionKernel.h"
 
 #include <atomic>
-#include <chrono>
 #include <condition_variable>
 #include <exception>
 #include <mutex>
-#include <stdexcept>
 #include <thread>
-#include <vector>
 
 #if defined(__x86_64__) || defined(__i386__) || defined(_M_X64) || defined(_M_IX86)
 #include <immintrin.h> // _mm_pause
@@ -44,53 +41,118 @@ std::string Describe(const std::exception_ptr& error)
     return "unknown exception";
   }
 }
+
+// A counter one thread advances and the other waits on. The waiter spins for
+// a few microseconds (a layer hand-over usually comes that soon), then sleeps;
+// the advancing side makes the wake-up call only when it sleeps.
+class LayerCounter
+{
+public:
+  int Get() const { return this->Value.load(std::memory_order_acquire); }
+
+  void Advance(int value)
+  {
+    this->Value.store(value, std::memory_order_release);
+    if (this->Sleeping.load())
+    {
+      std::lock_guard<std::mutex> lock(this->Mutex);
+      this->Changed.notify_all();
+    }
+  }
+
+  // Waits until the value reaches `target` or `stop` is set; false if stopped.
+  bool WaitFor(int target, const std::atomic<bool>& stop)
+  {
+    const auto ready = [&] { return stop.load() || this->Get() >= target; };
+    for (int spin = 0; spin < 256 && !ready(); ++spin)
+    {
+      CpuRelax();
+    }
+    if (!ready())
+    {
+      std::unique_lock<std::mutex> lock(this->Mutex);
+      this->Sleeping.store(true);
+      this->Changed.wait(lock, ready);
+      this->Sleeping.store(false);
+    }
+    return !stop.load();
+  }
+
+  // Wakes a sleeping waiter to see `stop`.
+  void Wake()
+  {
+    std::lock_guard<std::mutex> lock(this->Mutex);
+    this->Changed.notify_all();
+  }
+
+private:
+  std::atomic<int> Value{ 0 };
+  std::atomic<bool> Sleeping{ false };
+  std::mutex Mutex;
+  std::condition_variable Changed;
+};
+
+// The first exception of either thread, and the flag that stops both.
+struct Failure
+{
+  std::mutex Mutex;
+  std::exception_ptr Error;
+  std::atomic<bool> Stop{ false };
+
+  void Set(std::exception_ptr e)
+  {
+    {
+      std::lock_guard<std::mutex> lock(this->Mutex);
+      if (!this->Error)
+      {
+        this->Error = e;
+      }
+    }
+    this->Stop.store(true);
+  }
+};
 }
 
 //------------------------------------------------------------------------------
 float* vtkErrorDiffusionLayerRunner::DensitySlot(int k)
 {
-  return this->Densities + static_cast<size_t>(k % this->Slots) * this->LayerSize;
+  return this->Densities.data() + static_cast<size_t>(k % this->Slots) * this->LayerSize;
 }
 
 //------------------------------------------------------------------------------
-unsigned char* vtkErrorDiffusionLayerRunner::MaskSlot(int k)
+vtkErrorDiffusionLayerRunner::Layer vtkErrorDiffusionLayerRunner::LayerOf(int k, vtkIdType count)
 {
-  return this->LayerMasks[k % this->Slots];
+  Layer layer;
+  layer.Index = k;
+  layer.Count = count;
+  layer.Density = this->DensitySlot(k);
+  layer.Mask = this->LayerMasks[k % this->Slots];
+  return layer;
 }
 
 //------------------------------------------------------------------------------
-vtkIdType vtkErrorDiffusionLayerRunner::ScanLayer(vtkErrorDiffusionKernel& kernel, int k, int nz)
+// Scans layer k, whose densities (and its successor's) are filled.
+vtkIdType vtkErrorDiffusionLayerRunner::ScanLayer(vtkErrorDiffusionKernel& kernel, int k)
 {
-  // Layer k's densities were filled by the scan of layer k - 1 (the look-ahead
-  // the kernel needs), except for the first one.
-  if (k == 0)
-  {
-    this->Fill(0, this->DensitySlot(0));
-  }
-  const float* next = nullptr;
-  if (k + 1 < nz || this->LastHasNext)
-  {
-    this->Fill(k + 1, this->DensitySlot(k + 1));
-    next = this->DensitySlot(k + 1);
-  }
+  const bool hasNext = k + 1 < this->Layers || this->LastHasNext;
   unsigned char* mask = this->MaskStorage ? this->MaskStorage(k) : nullptr;
   if (!mask)
   {
-    mask = this->Masks + static_cast<size_t>(k % this->Slots) * this->LayerSize;
+    mask = this->Masks.data() + static_cast<size_t>(k % this->Slots) * this->LayerSize;
   }
   this->LayerMasks[k % this->Slots] = mask; // published to the consumer with the count
   if (this->BeforeScan)
   {
     this->BeforeScan(k, this->DensitySlot(k));
   }
-  return kernel.ProcessLayer(this->DensitySlot(k), next, mask);
+  return kernel.ProcessLayer(
+    this->DensitySlot(k), hasNext ? this->DensitySlot(k + 1) : nullptr, mask);
 }
 
 //------------------------------------------------------------------------------
 bool vtkErrorDiffusionLayerRunner::Run(
   vtkErrorDiffusionKernel& kernel, int nx, int ny, int nz, bool lastHasNext)
 {
-  this->LastHasNext = lastHasNext;
   this->Error.clear();
   if (!this->Fill || !this->Consume)
   {
@@ -105,46 +167,45 @@ bool vtkErrorDiffusionLayerRunner::Run(
     }
     return true;
   }
-  // A layer is filled one scan ahead of its own and freed when consumed: two
-  // buffers suffice in turn; four let the scan run ahead of the consumer.
-  this->Slots = this->Threaded ? 4 : 2;
+  this->Layers = nz;
+  this->LastHasNext = lastHasNext;
+  // Two buffers suffice in turn; eight let the filling, the scan and the
+  // consumer each run a few layers apart.
+  this->Slots = this->Threaded ? 8 : 2;
   this->LayerSize = static_cast<size_t>(nx) * static_cast<size_t>(ny);
-  std::vector<float> densities;
-  std::vector<unsigned char> masks;
   try
   {
-    densities.resize(this->Slots * this->LayerSize);
-    masks.resize(this->Slots * this->LayerSize);
+    this->Densities.resize(this->Slots * this->LayerSize);
+    this->Masks.resize(this->Slots * this->LayerSize);
   }
   catch (const std::exception& e)
   {
     this->Error = std::string("cannot allocate the layer buffers: ") + e.what();
     return false;
   }
-  this->Densities = densities.data();
-  this->Masks = masks.data();
   this->LayerMasks.assign(this->Slots, nullptr);
-  const bool done = this->Threaded ? this->RunThreaded(kernel, nz) : this->RunSequential(kernel, nz);
-  this->Densities = nullptr;
-  this->Masks = nullptr;
+  const bool done = this->Threaded ? this->RunThreaded(kernel) : this->RunSequential(kernel);
+  this->Densities = std::vector<float>();
+  this->Masks = std::vector<unsigned char>();
   return done;
 }
 
 //------------------------------------------------------------------------------
-bool vtkErrorDiffusionLayerRunner::RunSequential(vtkErrorDiffusionKernel& kernel, int nz)
+bool vtkErrorDiffusionLayerRunner::RunSequential(vtkErrorDiffusionKernel& kernel)
 {
   try
   {
     vtkIdType total = 0;
-    for (int k = 0; k < nz; ++k)
+    this->Fill(0, this->DensitySlot(0));
+    for (int k = 0; k < this->Layers; ++k)
     {
-      Layer layer;
-      layer.Index = k;
-      layer.Count = this->ScanLayer(kernel, k, nz);
-      layer.Density = this->DensitySlot(k);
-      layer.Mask = this->MaskSlot(k);
-      total += layer.Count;
-      if (!this->Consume(layer))
+      if (k + 1 < this->Layers || this->LastHasNext)
+      {
+        this->Fill(k + 1, this->DensitySlot(k + 1));
+      }
+      const vtkIdType count = this->ScanLayer(kernel, k);
+      total += count;
+      if (!this->Consume(this->LayerOf(k, count)))
       {
         return false;
       }
@@ -163,99 +224,32 @@ bool vtkErrorDiffusionLayerRunner::RunSequential(vtkErrorDiffusionKernel& kernel
 }
 
 //------------------------------------------------------------------------------
-namespace
+bool vtkErrorDiffusionLayerRunner::RunThreaded(vtkErrorDiffusionKernel& kernel)
 {
-// A counter one thread advances and the other waits on. Going to sleep and
-// being woken costs tens of microseconds on a virtual machine, about the
-// scan of a 128 x 128 layer, so the waiting side first spins for up to 500
-// microseconds (with a pause hint that leaves the core to the other thread),
-// and the advancing side makes the wake-up call only when the other sleeps.
-class LayerCounter
-{
-public:
-  void Advance(int value)
-  {
-    this->Value.store(value);
-    if (this->Sleeping.load())
-    {
-      std::lock_guard<std::mutex> lock(this->Mutex);
-      this->Changed.notify_all();
-    }
-  }
-
-  // Waits until the value reaches `target` or `stop` is set; false if stopped.
-  bool WaitFor(int target, const std::atomic<bool>& stop)
-  {
-    const auto ready = [&] { return stop.load() || this->Value.load() >= target; };
-    const auto spinUntil = std::chrono::steady_clock::now() + std::chrono::microseconds(500);
-    for (int spin = 0; !ready(); ++spin)
-    {
-      if ((spin & 63) == 63 && std::chrono::steady_clock::now() > spinUntil)
-      {
-        std::unique_lock<std::mutex> lock(this->Mutex);
-        this->Sleeping.store(true);
-        this->Changed.wait(lock, ready);
-        this->Sleeping.store(false);
-        break;
-      }
-      CpuRelax();
-    }
-    return !stop.load();
-  }
-
-  // Wakes a sleeping waiter to see `stop`.
-  void Wake()
-  {
-    std::lock_guard<std::mutex> lock(this->Mutex);
-    this->Changed.notify_all();
-  }
-
-private:
-  std::atomic<int> Value{ 0 };
-  std::atomic<bool> Sleeping{ false };
-  std::mutex Mutex;
-  std::condition_variable Changed;
-};
-}
-
-//------------------------------------------------------------------------------
-bool vtkErrorDiffusionLayerRunner::RunThreaded(vtkErrorDiffusionKernel& kernel, int nz)
-{
-  LayerCounter scanned;  // layers whose mask is ready
-  LayerCounter consumed; // layers whose buffers are free again
-  std::atomic<bool> stop{ false };
-  std::mutex errorMutex;
-  std::exception_ptr error;
+  LayerCounter filled;  // layers whose densities are ready
+  LayerCounter scanned; // layers whose mask is ready
+  Failure failure;
+  const auto fail = [&](std::exception_ptr e) {
+    failure.Set(e);
+    filled.Wake();
+    scanned.Wake();
+  };
   // Written by the scan thread before it advances `scanned` past the layer,
   // read by the consumer after it saw that: the atomic orders them.
   std::vector<vtkIdType> counts(this->Slots, 0);
-
-  auto fail = [&](std::exception_ptr e) {
-    {
-      std::lock_guard<std::mutex> lock(errorMutex);
-      if (!error)
-      {
-        error = e;
-      }
-    }
-    stop.store(true);
-    scanned.Wake();
-    consumed.Wake();
-  };
+  const int toFill = this->Layers + (this->LastHasNext ? 1 : 0);
 
   std::thread scanner([&]() {
     try
     {
       vtkIdType total = 0;
-      for (int k = 0; k < nz; ++k)
+      for (int k = 0; k < this->Layers; ++k)
       {
-        // Scanning layer k fills layer k + 1, whose buffer held layer
-        // k + 1 - Slots: that one must have been consumed.
-        if (!consumed.WaitFor(k + 2 - this->Slots, stop))
+        if (!filled.WaitFor(std::min(k + 2, toFill), failure.Stop))
         {
           return;
         }
-        const vtkIdType count = this->ScanLayer(kernel, k, nz);
+        const vtkIdType count = this->ScanLayer(kernel, k);
         total += count;
         counts[k % this->Slots] = count;
         scanned.Advance(k + 1);
@@ -271,41 +265,37 @@ bool vtkErrorDiffusionLayerRunner::RunThreaded(vtkErrorDiffusionKernel& kernel, 
     }
   });
 
+  // This thread: fill ahead (a slot is free once its layer was consumed),
+  // consume behind.
   bool complete = true;
-  for (int k = 0; k < nz; ++k)
+  int next = 0;
+  try
   {
-    if (!scanned.WaitFor(k + 1, stop))
+    for (int k = 0; k < this->Layers && complete; ++k)
     {
-      complete = false;
-      break;
+      for (; next < toFill && next < k + this->Slots && !failure.Stop.load(); ++next)
+      {
+        this->Fill(next, this->DensitySlot(next));
+        filled.Advance(next + 1);
+      }
+      complete = scanned.WaitFor(k + 1, failure.Stop) &&
+        this->Consume(this->LayerOf(k, counts[k % this->Slots]));
     }
-    Layer layer;
-    layer.Index = k;
-    layer.Count = counts[k % this->Slots];
-    layer.Density = this->DensitySlot(k);
-    layer.Mask = this->MaskSlot(k);
-    bool go = false;
-    try
-    {
-      go = this->Consume(layer);
-    }
-    catch (...)
-    {
-      fail(std::current_exception());
-    }
-    if (!go)
-    {
-      stop.store(true);
-      consumed.Wake();
-      complete = false;
-      break;
-    }
-    consumed.Advance(k + 1);
+  }
+  catch (...)
+  {
+    fail(std::current_exception());
+    complete = false;
+  }
+  if (!complete)
+  {
+    failure.Stop.store(true);
+    filled.Wake();
   }
   scanner.join();
-  if (error)
+  if (failure.Error)
   {
-    this->Error = Describe(error);
+    this->Error = Describe(failure.Error);
     return false;
   }
   return complete;

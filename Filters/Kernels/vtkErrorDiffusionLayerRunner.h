@@ -5,30 +5,38 @@
  * @brief   Runs a vtkErrorDiffusionKernel over the layers of a volume and hands
  *          each finished layer to a consumer, optionally on two threads.
  *
- * The error-diffusion scan is sequential, but what is done with its result
- * (turning the samples of a layer into points and attributes) is not: with
- * SetThreaded(true) the scan runs on a worker thread and the layers go, in
- * order, to the consumer on the calling thread, so both overlap. The calling
- * thread is the one that consumes, so a consumer may report progress and
- * check for abort the way a VTK filter must (from the thread that called it).
+ * The error-diffusion scan is sequential, but preparing its input (mapping
+ * the values of a layer to densities) and using its result (turning the
+ * samples of a layer into points and attributes) are not: with
+ * SetThreaded(true) the scan runs on a worker thread and does nothing else,
+ * while the calling thread fills the densities of the layers ahead of it and
+ * consumes, in order, the layers behind it. The calling thread is the one
+ * that fills and consumes, so a consumer may report progress and check for
+ * abort the way a VTK filter must (from the thread that called it).
  *
  * Per layer k (0-based in the run) the runner asks Fill(k, density) for the
- * densities, keeping one layer ahead because the kernel needs the next
- * layer's densities, lets the kernel sample layer k into the layer's mask
- * (the buffer MaskStorage(k) returns, or one of the runner's own when it
- * returns nullptr or is not set), then
- * calls Consume with the layer's densities, mask and count. The buffers of a
- * layer stay valid until Consume returns. After the last layer Finish(total)
- * runs on the scan thread (it may start before the consumer has caught up),
- * a place for work that only needs the number of samples.
+ * densities (the kernel also needs the next layer's, so Fill runs at least one
+ * layer ahead of the scan), calls BeforeScan(k, density) if set, lets the
+ * kernel sample layer k into the layer's mask (the buffer MaskStorage(k)
+ * returns, or one of the runner's own when it returns nullptr or is not set),
+ * then calls Consume with the layer's densities, mask and count. The buffers
+ * of a layer stay valid until Consume returns. After the last layer
+ * Finish(total) runs on the scan thread (it may start before the consumer has
+ * caught up): a place for work that needs only the number of samples.
+ *
+ * Waiting: a thread that waits for the other spins for a few microseconds and
+ * then sleeps, and is woken only when it sleeps, so a machine whose other
+ * cores are busy loses no time to spinning (a longer spin halved the speed
+ * when another process held the second core).
  *
  * The result does not depend on threading: the kernel sees the same layers in
- * the same order either way. Memory: four layers of densities and masks when
- * threaded, two when not.
+ * the same order either way. Memory: a ring of 8 layers of densities and
+ * masks when threaded, 2 when not.
  *
- * Fill, MaskStorage, BeforeScan and Finish run on the scan thread; they must not touch
- * what Consume touches. An exception thrown by any callback stops the run;
- * Run then returns false and GetError() says what was thrown.
+ * Fill and Consume run on the calling thread; MaskStorage, BeforeScan and
+ * Finish on the scan thread, and must not touch what the others touch. An
+ * exception thrown by any callback stops the run; Run then returns false and
+ * GetError() says what was thrown.
  */
 #ifndef vtkErrorDiffusionLayerRunner_h
 #define vtkErrorDiffusionLayerRunner_h
@@ -83,11 +91,11 @@ public:
   const std::string& GetError() const { return this->Error; }
 
 private:
-  bool RunSequential(vtkErrorDiffusionKernel& kernel, int nz);
-  bool RunThreaded(vtkErrorDiffusionKernel& kernel, int nz);
-  vtkIdType ScanLayer(vtkErrorDiffusionKernel& kernel, int k, int nz);
+  bool RunSequential(vtkErrorDiffusionKernel& kernel);
+  bool RunThreaded(vtkErrorDiffusionKernel& kernel);
+  vtkIdType ScanLayer(vtkErrorDiffusionKernel& kernel, int k);
+  Layer LayerOf(int k, vtkIdType count);
   float* DensitySlot(int k);
-  unsigned char* MaskSlot(int k);
 
   FillFunction Fill;
   MaskFunction MaskStorage;
@@ -95,14 +103,15 @@ private:
   FinishFunction Finish;
   BeforeScanFunction BeforeScan;
   bool Threaded = false;
-  bool LastHasNext = false;
   std::string Error;
 
-  // The ring of layer buffers of one Run.
+  // The layers of one Run and their ring of buffers.
+  int Layers = 0;
+  bool LastHasNext = false;
   int Slots = 2;
   size_t LayerSize = 0;
-  float* Densities = nullptr;
-  unsigned char* Masks = nullptr;
+  std::vector<float> Densities;
+  std::vector<unsigned char> Masks;
   std::vector<unsigned char*> LayerMasks; // the mask of the layer in each slot
 };
 
