@@ -471,6 +471,31 @@ float vtkErrorDiffusionKernel::SpreadAtFace(float e, const float w[6], const boo
 }
 
 //------------------------------------------------------------------------------
+// Whether every voxel of the layer and of its successor is active (the fast
+// path); otherwise `active` receives the number of active voxels of the
+// layer. A layer is tested once, as the successor, and the answer reused when
+// it comes up as the current layer (the caller passes the same densities).
+bool vtkErrorDiffusionKernel::TestLayers(const float* density, const float* next, vtkIdType& active)
+{
+  const size_t layerSize = static_cast<size_t>(this->NX) * this->NY;
+  const bool currentActive =
+    density == this->TestedLayer ? this->TestedLayerActive : AllActive(density, layerSize);
+  bool nextActive = false;
+  if (next)
+  {
+    nextActive = next == density ? currentActive : AllActive(next, layerSize);
+    this->TestedLayer = next;
+    this->TestedLayerActive = nextActive;
+  }
+  const bool allActive = currentActive && nextActive;
+  if (!allActive)
+  {
+    active = currentActive ? static_cast<vtkIdType>(layerSize) : CountActive(density, layerSize);
+  }
+  return allActive;
+}
+
+//------------------------------------------------------------------------------
 // The scan of one layer. Record keeps what each voxel received (for
 // MeasureReceivedError) and costs a store per voxel, so it is a template
 // flag. Rows away from the faces of a layer whose voxels and successors are
@@ -481,24 +506,8 @@ vtkIdType vtkErrorDiffusionKernel::ScanLayer(
   const float* density, const float* next, unsigned char* mask, int layer)
 {
   const bool nextLayerExists = next != nullptr;
-  const size_t layerSize = static_cast<size_t>(this->NX) * this->NY;
-  // A layer is tested once, as the successor, and the answer reused when it
-  // comes up as the current layer (the caller passes the same densities).
-  const bool currentActive =
-    density == this->TestedLayer ? this->TestedLayerActive : AllActive(density, layerSize);
-  bool nextActive = false;
-  if (nextLayerExists)
-  {
-    nextActive = next == density ? currentActive : AllActive(next, layerSize);
-    this->TestedLayer = next;
-    this->TestedLayerActive = nextActive;
-  }
-  const bool allActive = currentActive && nextActive;
   Reservoir reservoir;
-  if (!allActive)
-  {
-    reservoir.Remaining = currentActive ? static_cast<vtkIdType>(layerSize) : CountActive(density, layerSize);
-  }
+  const bool allActive = this->TestLayers(density, next, reservoir.Remaining);
   const LayerScan s = GetLayerScan(this->NX, this->NY, layer);
   this->SeedLayer(layer);
   float* cur = this->Current.data();

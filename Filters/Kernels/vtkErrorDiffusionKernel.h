@@ -221,6 +221,7 @@ private:
   // Record keeps in Current what each voxel received (MeasureReceivedError).
   template <bool Record = false>
   vtkIdType ScanLayer(const float* density, const float* next, unsigned char* mask, int layer);
+  bool TestLayers(const float* density, const float* next, vtkIdType& active);
   float SpreadAtFace(float e, const float w[6], const bool valid[6], vtkIdType idx, vtkIdType d,
     vtkIdType v, void* reservoir);
   vtkIdType DrawLayerIndependently(const float* density, unsigned char* mask);

@@ -7,121 +7,169 @@
 #include <limits>
 #include <numeric>
 
+namespace
+{
+// The simplex of one minimization and its moves.
+class Simplex
+{
+public:
+  Simplex(const vtkNelderMeadMinimizer::Function& f, const std::vector<double>& start,
+    const std::vector<double>& steps)
+    : F(f)
+    , N(start.size())
+    , Points(start.size() + 1, start)
+    , Values(start.size() + 1)
+    , Order(start.size() + 1)
+    , Centroid(start.size())
+    , Trial(start.size())
+    , Second(start.size())
+  {
+    this->Values[0] = this->Evaluate(start);
+    for (size_t i = 0; i < this->N; ++i)
+    {
+      this->Points[i + 1][i] += (i < steps.size() && steps[i] != 0.0) ? steps[i] : 0.05;
+      this->Values[i + 1] = this->Evaluate(this->Points[i + 1]);
+    }
+  }
+
+  int Evaluations = 0;
+
+  // Sorts the vertices; true when best and worst agree within the tolerance.
+  bool Converged(double tolerance)
+  {
+    std::iota(this->Order.begin(), this->Order.end(), 0);
+    std::sort(this->Order.begin(), this->Order.end(),
+      [&](size_t a, size_t b) { return this->Values[a] < this->Values[b]; });
+    const double best = this->Values[this->Order[0]];
+    const double worst = this->Values[this->Order[this->N]];
+    return std::isfinite(worst) && worst - best <= tolerance * (std::abs(best) + 1e-12);
+  }
+
+  // One iteration: reflect, expand, contract or shrink (after Converged()).
+  void Step()
+  {
+    const size_t n = this->N;
+    std::fill(this->Centroid.begin(), this->Centroid.end(), 0.0);
+    for (size_t i = 0; i < n; ++i)
+    {
+      for (size_t j = 0; j < n; ++j)
+      {
+        this->Centroid[j] += this->Points[this->Order[i]][j] / static_cast<double>(n);
+      }
+    }
+    const double best = this->Values[this->Order[0]];
+    const double secondWorst = this->Values[this->Order[n - 1]];
+    const double worst = this->Values[this->Order[n]];
+    this->Along(1.0, this->Trial);
+    const double reflected = this->Evaluate(this->Trial);
+    if (reflected < best)
+    {
+      this->Along(2.0, this->Second);
+      const double expanded = this->Evaluate(this->Second);
+      this->ReplaceWorst(expanded < reflected ? this->Second : this->Trial,
+        std::min(expanded, reflected));
+    }
+    else if (reflected < secondWorst)
+    {
+      this->ReplaceWorst(this->Trial, reflected);
+    }
+    else
+    {
+      this->Contract(reflected, worst);
+    }
+  }
+
+  double Best() const { return *std::min_element(this->Values.begin(), this->Values.end()); }
+
+  vtkNelderMeadMinimizer::Result Outcome(int iterations, bool converged) const
+  {
+    vtkNelderMeadMinimizer::Result result;
+    const size_t best = std::min_element(this->Values.begin(), this->Values.end()) - this->Values.begin();
+    result.Point = this->Points[best];
+    result.Value = this->Values[best];
+    result.Evaluations = this->Evaluations;
+    result.Iterations = iterations;
+    result.Converged = converged;
+    return result;
+  }
+
+private:
+  double Evaluate(const std::vector<double>& x)
+  {
+    ++this->Evaluations;
+    const double v = this->F(x);
+    return std::isfinite(v) ? v : std::numeric_limits<double>::infinity();
+  }
+
+  // centroid + t * (centroid - worst)
+  void Along(double t, std::vector<double>& out) const
+  {
+    const std::vector<double>& worst = this->Points[this->Order[this->N]];
+    for (size_t j = 0; j < this->N; ++j)
+    {
+      out[j] = this->Centroid[j] + t * (this->Centroid[j] - worst[j]);
+    }
+  }
+
+  void ReplaceWorst(const std::vector<double>& x, double value)
+  {
+    this->Points[this->Order[this->N]] = x;
+    this->Values[this->Order[this->N]] = value;
+  }
+
+  // Contract towards the better of the worst point and its reflection, or
+  // shrink the whole simplex towards the best point.
+  void Contract(double reflected, double worst)
+  {
+    const bool outside = reflected < worst;
+    this->Along(outside ? 0.5 : -0.5, this->Second);
+    const double contracted = this->Evaluate(this->Second);
+    if (contracted < (outside ? reflected : worst))
+    {
+      this->ReplaceWorst(this->Second, contracted);
+      return;
+    }
+    const std::vector<double> keep = this->Points[this->Order[0]];
+    for (size_t i = 1; i <= this->N; ++i)
+    {
+      std::vector<double>& x = this->Points[this->Order[i]];
+      for (size_t j = 0; j < this->N; ++j)
+      {
+        x[j] = keep[j] + 0.5 * (x[j] - keep[j]);
+      }
+      this->Values[this->Order[i]] = this->Evaluate(x);
+    }
+  }
+
+  const vtkNelderMeadMinimizer::Function& F;
+  size_t N;
+  std::vector<std::vector<double>> Points;
+  std::vector<double> Values;
+  std::vector<size_t> Order;
+  std::vector<double> Centroid, Trial, Second;
+};
+}
+
 //------------------------------------------------------------------------------
 vtkNelderMeadMinimizer::Result vtkNelderMeadMinimizer::Minimize(
   const Function& f, const std::vector<double>& start, const std::vector<double>& steps) const
 {
-  const size_t n = start.size();
-  Result result;
-  int evaluations = 0;
-  auto evaluate = [&](const std::vector<double>& x) {
-    ++evaluations;
-    const double v = f(x);
-    return std::isfinite(v) ? v : std::numeric_limits<double>::infinity();
-  };
-
-  std::vector<std::vector<double>> simplex(n + 1, start);
-  std::vector<double> values(n + 1);
-  values[0] = evaluate(start);
-  for (size_t i = 0; i < n; ++i)
-  {
-    simplex[i + 1][i] += (i < steps.size() && steps[i] != 0.0) ? steps[i] : 0.05;
-    values[i + 1] = evaluate(simplex[i + 1]);
-  }
-
-  std::vector<size_t> order(n + 1);
-  std::vector<double> centroid(n), trial(n), second(n);
-  auto along = [&](double t, std::vector<double>& out) {
-    // centroid + t * (centroid - worst)
-    const std::vector<double>& worst = simplex[order[n]];
-    for (size_t j = 0; j < n; ++j)
-    {
-      out[j] = centroid[j] + t * (centroid[j] - worst[j]);
-    }
-  };
-
+  Simplex simplex(f, start, steps);
   int iterations = 0;
   bool converged = false;
-  while (evaluations < this->MaximumEvaluations)
+  while (simplex.Evaluations < this->MaximumEvaluations)
   {
-    std::iota(order.begin(), order.end(), 0);
-    std::sort(order.begin(), order.end(), [&](size_t a, size_t b) { return values[a] < values[b]; });
-    const double best = values[order[0]];
-    const double worstValue = values[order[n]];
-    if (std::isfinite(worstValue) && worstValue - best <= this->Tolerance * (std::abs(best) + 1e-12))
+    if (simplex.Converged(this->Tolerance))
     {
       converged = true;
       break;
     }
     ++iterations;
-    std::fill(centroid.begin(), centroid.end(), 0.0);
-    for (size_t i = 0; i < n; ++i)
-    {
-      for (size_t j = 0; j < n; ++j)
-      {
-        centroid[j] += simplex[order[i]][j] / static_cast<double>(n);
-      }
-    }
-    const double secondWorst = values[order[n - 1]];
-
-    along(1.0, trial);
-    const double reflected = evaluate(trial);
-    if (reflected < best)
-    {
-      along(2.0, second);
-      const double expanded = evaluate(second);
-      if (expanded < reflected)
-      {
-        simplex[order[n]] = second;
-        values[order[n]] = expanded;
-      }
-      else
-      {
-        simplex[order[n]] = trial;
-        values[order[n]] = reflected;
-      }
-    }
-    else if (reflected < secondWorst)
-    {
-      simplex[order[n]] = trial;
-      values[order[n]] = reflected;
-    }
-    else
-    {
-      // Contract towards the better of the worst point and its reflection.
-      const bool outside = reflected < worstValue;
-      along(outside ? 0.5 : -0.5, second);
-      const double contracted = evaluate(second);
-      if (contracted < (outside ? reflected : worstValue))
-      {
-        simplex[order[n]] = second;
-        values[order[n]] = contracted;
-      }
-      else
-      {
-        const std::vector<double>& keep = simplex[order[0]];
-        for (size_t i = 1; i <= n; ++i)
-        {
-          std::vector<double>& x = simplex[order[i]];
-          for (size_t j = 0; j < n; ++j)
-          {
-            x[j] = keep[j] + 0.5 * (x[j] - keep[j]);
-          }
-          values[order[i]] = evaluate(x);
-        }
-      }
-    }
+    simplex.Step();
     if (this->Watch)
     {
-      this->Watch(evaluations, *std::min_element(values.begin(), values.end()));
+      this->Watch(simplex.Evaluations, simplex.Best());
     }
   }
-
-  const size_t bestIndex = std::min_element(values.begin(), values.end()) - values.begin();
-  result.Point = simplex[bestIndex];
-  result.Value = values[bestIndex];
-  result.Evaluations = evaluations;
-  result.Iterations = iterations;
-  result.Converged = converged;
-  return result;
+  return simplex.Outcome(iterations, converged);
 }
