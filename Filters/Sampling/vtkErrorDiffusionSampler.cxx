@@ -2,6 +2,7 @@
 // SPDX-License-Identifier: BSD-3-Clause
 #include "vtkErrorDiffusionSampler.h"
 
+#include "vtkBlueNoiseRelaxation.h"
 #include "vtkCellArray.h"
 #include "vtkDoubleArray.h"
 #include "vtkErrorDiffusionLayerRunner.h"
@@ -15,6 +16,7 @@
 #include "vtkMatrix3x3.h"
 #include "vtkObjectFactory.h"
 #include "vtkPiecewiseFunction.h"
+#include "vtkPoissonDiskKernel.h"
 #include "vtkPointData.h"
 #include "vtkPoints.h"
 #include "vtkPolyData.h"
@@ -23,10 +25,12 @@
 #include "vtkStreamingDemandDrivenPipeline.h"
 #include "vtkUnsignedCharArray.h"
 #include "vtkVersionMacros.h"
+#include "vtkWeightedSampleEliminationKernel.h"
 
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <new>
 #include <sstream>
 #include <vector>
 
@@ -130,12 +134,14 @@ public:
   size_t Current = 0;
   bool Running = false;
   bool NeedsStatistics = false; // every piece takes part, even one without layers
+  bool Relaxing = false;        // the relaxation holds layers back
 
   // The run.
   vtkSamplingDensity Density;
   vtkSamplingBudget Statistics;
   vtkErrorDiffusionKernel Kernel;
   vtkErrorDiffusionPointAssembler Assembler;
+  vtkBlueNoiseRelaxation Relaxation;
   vtkSmartPointer<vtkPolyData> Points;
   vtkSmartPointer<vtkUnsignedCharArray> Mask;
   std::vector<double> LayerSums; // expected points per sampled layer
@@ -148,8 +154,9 @@ public:
   vtkIdType LayerSize() const { return static_cast<vtkIdType>(this->NX()) * this->NY(); }
   int SampledLayers() const { return std::max(0, this->Sampled[5] - this->Sampled[4] + 1); }
 
-  // The input extent a step needs: full layers, and the layer after a
-  // sampling step's last one when the scan goes on past it.
+  // The input extent a step needs: full layers, the layer after a sampling
+  // step's last one when the scan goes on past it, and the layers the
+  // relaxation has not released yet (their attributes are read when it does).
   void StepExtent(const Step& step, int extent[6]) const
   {
     std::copy(this->Whole, this->Whole + 4, extent);
@@ -158,6 +165,11 @@ public:
     if (!step.Statistics && step.Last < this->Sampled[5])
     {
       extent[5] = step.Last + 1;
+    }
+    if (!step.Statistics && this->Relaxing)
+    {
+      extent[4] = std::min(step.First,
+        std::max(this->Sampled[4], step.First - (vtkBlueNoiseRelaxation::MaximumRadius + 2)));
     }
   }
 };
@@ -273,7 +285,13 @@ int vtkErrorDiffusionSampler::RequestUpdateExtent(
     const bool emptyPiece = piece >= static_cast<int>(parts.size());
     run.Sampled[4] = emptyPiece ? 0 : parts[piece][0];
     run.Sampled[5] = emptyPiece ? -1 : parts[piece][1];
-    run.ScanFirst = std::max(run.Whole[4], run.Sampled[4] - (run.Piece ? this->OverlapLayers : 0));
+    // The whole-volume methods take their piece at once, without overlap.
+    const bool whole =
+      this->Method == METHOD_POISSON_DISK || this->Method == METHOD_SAMPLE_ELIMINATION;
+    const int slabs = whole ? 1 : this->NumberOfSlabs;
+    run.Relaxing = this->Method == METHOD_RELAXED_ERROR_DIFFUSION;
+    run.ScanFirst =
+      std::max(run.Whole[4], run.Sampled[4] - (run.Piece && !whole ? this->OverlapLayers : 0));
     run.Steps.clear();
     run.Current = 0;
     vtkSamplingDensity probe;
@@ -287,12 +305,12 @@ int vtkErrorDiffusionSampler::RequestUpdateExtent(
     {
       int first = 0, last = -1;
       this->GetStatisticsLayers(run.Whole, piece, pieces, first, last);
-      for (const auto& slab : SplitLayers(first, last, this->NumberOfSlabs))
+      for (const auto& slab : SplitLayers(first, last, slabs))
       {
         run.Steps.push_back({ true, slab[0], slab[1] });
       }
     }
-    for (const auto& slab : SplitLayers(run.ScanFirst, run.Sampled[5], this->NumberOfSlabs))
+    for (const auto& slab : SplitLayers(run.ScanFirst, run.Sampled[5], slabs))
     {
       run.Steps.push_back({ false, slab[0], slab[1] });
     }
@@ -407,8 +425,9 @@ bool vtkErrorDiffusionSampler::StartRun(vtkInformation*, vtkInformationVector**)
   }
   vtkErrorDiffusionParameterTable table;
   std::string error;
-  if (this->Method == METHOD_ERROR_DIFFUSION &&
-    !SelectTable(this->ParameterSet, this->ParameterFile, table, error))
+  const bool diffusion =
+    this->Method == METHOD_ERROR_DIFFUSION || this->Method == METHOD_RELAXED_ERROR_DIFFUSION;
+  if (diffusion && !SelectTable(this->ParameterSet, this->ParameterFile, table, error))
   {
     vtkErrorMacro(<< error);
     return false;
@@ -428,7 +447,9 @@ bool vtkErrorDiffusionSampler::StartRun(vtkInformation*, vtkInformationVector**)
   run.Kernel.SetParameters(table);
   run.Kernel.SetModulationScale(this->ModulationScale);
   run.Kernel.SetSeed(static_cast<std::uint64_t>(this->Seed));
-  run.Kernel.SetMethod(this->Method);
+  run.Kernel.SetMethod(this->Method == METHOD_WHITE_NOISE
+      ? vtkErrorDiffusionKernel::METHOD_WHITE_NOISE
+      : vtkErrorDiffusionKernel::METHOD_ERROR_DIFFUSION);
   run.Kernel.SetWarmUpLayers(this->WarmUpLayers);
   run.Kernel.Begin(run.NX(), run.NY(), run.ScanFirst);
   run.Points = vtkSmartPointer<vtkPolyData>::New();
@@ -516,44 +537,97 @@ bool vtkErrorDiffusionSampler::FinishStatistics()
 }
 
 //------------------------------------------------------------------------------
-// One sampling step: the layers of one slab through the kernel, their samples
-// into the output.
-bool vtkErrorDiffusionSampler::SampleSlab(vtkImageData* input, vtkInformationVector** inputVector)
+// The output arrays at the first sampling step; the next slab's arrays after.
+bool vtkErrorDiffusionSampler::StartAssembly(vtkImageData* input)
+{
+  vtkInternals& run = *this->Internals;
+  std::string error;
+  if (run.AssemblerStarted)
+  {
+    if (!run.Assembler.SetSource(input, error))
+    {
+      vtkErrorMacro("Cannot stream the input: " << error << ".");
+      return false;
+    }
+    return true;
+  }
+  run.Assembler.Begin(input, run.Sampled, run.Points->GetPointData(),
+    this->OutputPointsPrecision == DOUBLE_PRECISION ? VTK_DOUBLE : VTK_FLOAT);
+  run.Assembler.SetJitter(this->Jitter, static_cast<std::uint64_t>(this->Seed));
+  for (const std::string& name : run.Assembler.GetSkippedArrays())
+  {
+    vtkWarningMacro("The point array '" << name << "' does not have one tuple per voxel: it is "
+                                        << "not carried to the samples.");
+  }
+  if (this->GenerateMask)
+  {
+    run.Mask = vtkSmartPointer<vtkUnsignedCharArray>::New();
+    run.Mask->SetName("SampleMask");
+    run.Mask->SetNumberOfValues(run.LayerSize() * run.SampledLayers());
+  }
+  if (this->Method == METHOD_RELAXED_ERROR_DIFFUSION)
+  {
+    run.Relaxation.Begin(run.NX(), run.NY(), run.Sampled[4], static_cast<std::uint64_t>(this->Seed));
+  }
+  run.AssemblerStarted = true;
+  return true;
+}
+
+//------------------------------------------------------------------------------
+// A final layer of samples: into the points, and into the mask unless the
+// kernel wrote it there.
+void vtkErrorDiffusionSampler::Emit(
+  int z, const float* density, const unsigned char* mask, vtkIdType count)
+{
+  vtkInternals& run = *this->Internals;
+  run.Assembler.AddLayer(z, density, mask, count);
+  if (run.Mask)
+  {
+    unsigned char* stored = run.Mask->GetPointer((z - run.Sampled[4]) * run.LayerSize());
+    if (stored != mask)
+    {
+      std::copy(mask, mask + run.LayerSize(), stored);
+    }
+  }
+}
+
+//------------------------------------------------------------------------------
+// A layer the scan finished: final, or on to the relaxation first.
+void vtkErrorDiffusionSampler::Receive(
+  int z, const float* density, const unsigned char* mask, vtkIdType count)
+{
+  vtkInternals& run = *this->Internals;
+  if (z < run.Sampled[4])
+  {
+    return; // an overlap layer: it only settles the scan
+  }
+  if (this->Method != METHOD_RELAXED_ERROR_DIFFUSION)
+  {
+    this->Emit(z, density, mask, count);
+    return;
+  }
+  for (const auto& layer : run.Relaxation.Push(z, density, mask))
+  {
+    this->Emit(layer.Z, layer.Density, layer.Mask, layer.Count);
+  }
+  if (z == run.Sampled[5])
+  {
+    for (const auto& layer : run.Relaxation.Flush())
+    {
+      this->Emit(layer.Z, layer.Density, layer.Mask, layer.Count);
+    }
+  }
+}
+
+//------------------------------------------------------------------------------
+// One sampling step of a scanning method: the layers of one slab through the
+// kernel on the runner.
+bool vtkErrorDiffusionSampler::ScanSlab(vtkImageData* input, vtkDataArray* array)
 {
   vtkInternals& run = *this->Internals;
   const vtkInternals::Step& step = run.Steps[run.Current];
-  vtkDataArray* array = this->GetDensityArray(input, inputVector);
-  if (!array)
-  {
-    return false;
-  }
   int extent[6];
   input->GetExtent(extent);
-  std::string error;
-  if (!run.AssemblerStarted)
-  {
-    run.Assembler.Begin(input, run.Sampled, run.Points->GetPointData(),
-      this->OutputPointsPrecision == DOUBLE_PRECISION ? VTK_DOUBLE : VTK_FLOAT);
-    run.Assembler.SetJitter(this->Jitter, static_cast<std::uint64_t>(this->Seed));
-    for (const std::string& name : run.Assembler.GetSkippedArrays())
-    {
-      vtkWarningMacro("The point array '" << name << "' does not have one tuple per voxel: it is "
-                                          << "not carried to the samples.");
-    }
-    if (this->GenerateMask)
-    {
-      run.Mask = vtkSmartPointer<vtkUnsignedCharArray>::New();
-      run.Mask->SetName("SampleMask");
-      run.Mask->SetNumberOfValues(run.LayerSize() * run.SampledLayers());
-    }
-    run.AssemblerStarted = true;
-  }
-  else if (!run.Assembler.SetSource(input, error))
-  {
-    vtkErrorMacro("Cannot stream the input: " << error << ".");
-    return false;
-  }
-
   const vtkIdType layer = run.LayerSize();
   vtkUnsignedCharArray* ghostArray = input->GetPointGhostArray();
   const unsigned char* ghosts = ghostArray ? ghostArray->GetPointer(0) : nullptr;
@@ -578,7 +652,7 @@ bool vtkErrorDiffusionSampler::SampleSlab(vtkImageData* input, vtkInformationVec
       run.Kernel.CenterCarriedError(density); // the overlap shapes, but adds nothing
     }
   });
-  if (run.Mask)
+  if (run.Mask && this->Method != METHOD_RELAXED_ERROR_DIFFUSION)
   {
     runner.SetMaskStorage([&](int k) -> unsigned char* {
       const int z = step.First + k;
@@ -587,11 +661,7 @@ bool vtkErrorDiffusionSampler::SampleSlab(vtkImageData* input, vtkInformationVec
   }
   const int progressStride = std::max(1, layers / 100);
   runner.SetConsume([&](const vtkErrorDiffusionLayerRunner::Layer& l) {
-    const int z = step.First + l.Index;
-    if (z >= run.Sampled[4])
-    {
-      run.Assembler.AddLayer(z, l.Density, l.Mask, l.Count);
-    }
+    this->Receive(step.First + l.Index, l.Density, l.Mask, l.Count);
     run.ProgressDone += 1.0;
     if (l.Index % progressStride == 0)
     {
@@ -599,8 +669,7 @@ bool vtkErrorDiffusionSampler::SampleSlab(vtkImageData* input, vtkInformationVec
     }
     return !this->IsAborted();
   });
-  const bool lastHasNext = step.Last < run.Sampled[5];
-  if (!runner.Run(run.Kernel, run.NX(), run.NY(), layers, lastHasNext))
+  if (!runner.Run(run.Kernel, run.NX(), run.NY(), layers, step.Last < run.Sampled[5]))
   {
     if (!runner.GetError().empty())
     {
@@ -609,6 +678,78 @@ bool vtkErrorDiffusionSampler::SampleSlab(vtkImageData* input, vtkInformationVec
     return false;
   }
   return true;
+}
+
+//------------------------------------------------------------------------------
+// The whole-volume methods (Poisson disk, sample elimination): every density
+// at once, then the layers of the mask into the output.
+bool vtkErrorDiffusionSampler::SampleWhole(vtkImageData* input, vtkDataArray* array)
+{
+  vtkInternals& run = *this->Internals;
+  int extent[6];
+  input->GetExtent(extent);
+  const vtkIdType layer = run.LayerSize();
+  const vtkIdType voxels = layer * run.SampledLayers();
+  vtkUnsignedCharArray* ghostArray = input->GetPointGhostArray();
+  const unsigned char* ghosts = ghostArray ? ghostArray->GetPointer(0) : nullptr;
+  std::vector<float> density;
+  std::vector<unsigned char> mask;
+  try
+  {
+    density.resize(static_cast<size_t>(voxels));
+    mask.resize(static_cast<size_t>(voxels));
+  }
+  catch (const std::bad_alloc&)
+  {
+    vtkErrorMacro("Not enough memory for the whole volume the method needs (" << voxels
+                                                                              << " voxels).");
+    return false;
+  }
+  for (int z = run.Sampled[4]; z <= run.Sampled[5]; ++z)
+  {
+    const vtkIdType begin = (z - extent[4]) * layer;
+    const vtkIdType k = z - run.Sampled[4];
+    run.LayerSums[k] = run.Density.Fill(array, begin, begin + layer, ghosts, density.data() + k * layer);
+  }
+  std::unique_ptr<vtkVoxelPointSetKernel> kernel;
+  if (this->Method == METHOD_POISSON_DISK)
+  {
+    kernel.reset(new vtkPoissonDiskKernel);
+  }
+  else
+  {
+    kernel.reset(new vtkWeightedSampleEliminationKernel);
+  }
+  kernel->SetSeed(static_cast<std::uint64_t>(this->Seed));
+  std::string error;
+  if (kernel->Sample(run.NX(), run.NY(), run.SampledLayers(), density.data(), mask.data(), &error) < 0)
+  {
+    vtkErrorMacro("Sampling failed: " << error);
+    return false;
+  }
+  for (vtkIdType k = 0; k < run.SampledLayers(); ++k)
+  {
+    const unsigned char* bits = mask.data() + k * layer;
+    this->Emit(run.Sampled[4] + static_cast<int>(k), density.data() + k * layer, bits,
+      std::count(bits, bits + layer, 1));
+  }
+  run.ProgressDone = run.ProgressTotal;
+  return !this->IsAborted();
+}
+
+//------------------------------------------------------------------------------
+// One sampling step: the layers of one slab (or the whole volume) into the
+// output.
+bool vtkErrorDiffusionSampler::SampleSlab(vtkImageData* input, vtkInformationVector** inputVector)
+{
+  vtkDataArray* array = this->GetDensityArray(input, inputVector);
+  if (!array || !this->StartAssembly(input))
+  {
+    return false;
+  }
+  const bool whole =
+    this->Method == METHOD_POISSON_DISK || this->Method == METHOD_SAMPLE_ELIMINATION;
+  return whole ? this->SampleWhole(input, array) : this->ScanSlab(input, array);
 }
 
 //------------------------------------------------------------------------------
@@ -629,7 +770,9 @@ void vtkErrorDiffusionSampler::FinishOutput(
     // error fired that many points ahead of their mass, in the last layers
     // that have points (see vtkErrorDiffusionKernel); they go.
     const double leftover = run.Kernel.GetCarriedError();
-    if (this->Method == METHOD_ERROR_DIFFUSION && leftover <= -0.5)
+    const bool diffusion =
+      this->Method == METHOD_ERROR_DIFFUSION || this->Method == METHOD_RELAXED_ERROR_DIFFUSION;
+    if (diffusion && leftover <= -0.5)
     {
       const auto voxels = run.Assembler.RemoveLast(static_cast<vtkIdType>(std::llround(-leftover)));
       for (const auto& ijk : voxels)

@@ -108,7 +108,10 @@ public:
   enum Methods
   {
     METHOD_ERROR_DIFFUSION = vtkErrorDiffusionKernel::METHOD_ERROR_DIFFUSION,
-    METHOD_WHITE_NOISE = vtkErrorDiffusionKernel::METHOD_WHITE_NOISE
+    METHOD_WHITE_NOISE = vtkErrorDiffusionKernel::METHOD_WHITE_NOISE,
+    METHOD_RELAXED_ERROR_DIFFUSION = 2,
+    METHOD_POISSON_DISK = 3,
+    METHOD_SAMPLE_ELIMINATION = 4
   };
 
   enum DensityMappings
@@ -128,15 +131,30 @@ public:
 
   ///@{
   /**
-   * METHOD_ERROR_DIFFUSION (default): the blue-noise 3D error diffusion.
-   * METHOD_WHITE_NOISE: hit-and-miss sampling, every voxel drawn on its own
-   * with probability g (white noise, the baseline of particle-based volume
-   * rendering), with the same density mapping and the same expected count.
+   * How the points are drawn, all with the same density mapping and point
+   * budget:
+   * - METHOD_RELAXED_ERROR_DIFFUSION (default): the 3D error diffusion, then
+   *   one sweep of one-voxel moves that spreads the samples closer than the
+   *   blue-noise spacing (vtkBlueNoiseRelaxation, densities up to 1/4): less
+   *   low-frequency energy than a Poisson-disk set, the same count;
+   * - METHOD_ERROR_DIFFUSION: the paper's 3D error diffusion as it is;
+   * - METHOD_WHITE_NOISE: hit-and-miss sampling, every voxel drawn on its own
+   *   with probability g (white noise, the baseline of particle-based volume
+   *   rendering), the count within its binomial spread;
+   * - METHOD_POISSON_DISK: variable-radius Poisson-disk sampling on the voxel
+   *   grid (vtkPoissonDiskKernel), the count within about 0.5 %;
+   * - METHOD_SAMPLE_ELIMINATION: weighted sample elimination (Yuksel 2015,
+   *   vtkWeightedSampleEliminationKernel), the count exact.
+   * The last two need the whole volume (or piece) in memory, ignore
+   * NumberOfSlabs, and are two to three orders of magnitude slower.
    */
-  vtkSetClampMacro(Method, int, METHOD_ERROR_DIFFUSION, METHOD_WHITE_NOISE);
+  vtkSetClampMacro(Method, int, METHOD_ERROR_DIFFUSION, METHOD_SAMPLE_ELIMINATION);
   vtkGetMacro(Method, int);
   void SetMethodToErrorDiffusion() { this->SetMethod(METHOD_ERROR_DIFFUSION); }
   void SetMethodToWhiteNoise() { this->SetMethod(METHOD_WHITE_NOISE); }
+  void SetMethodToRelaxedErrorDiffusion() { this->SetMethod(METHOD_RELAXED_ERROR_DIFFUSION); }
+  void SetMethodToPoissonDisk() { this->SetMethod(METHOD_POISSON_DISK); }
+  void SetMethodToSampleElimination() { this->SetMethod(METHOD_SAMPLE_ELIMINATION); }
   ///@}
 
   ///@{
@@ -342,7 +360,7 @@ protected:
    */
   virtual bool ReduceStatistics(vtkSamplingBudget& statistics);
 
-  int Method = METHOD_ERROR_DIFFUSION;
+  int Method = METHOD_RELAXED_ERROR_DIFFUSION;
   int Component = 0;
   int DensityMapping = DENSITY_SCALAR_RANGE;
   double ScalarRange[2] = { 0.0, 1.0 };
@@ -377,6 +395,11 @@ private:
   bool CollectStatistics(vtkImageData* input, vtkInformationVector** inputVector);
   bool FinishStatistics();
   bool SampleSlab(vtkImageData* input, vtkInformationVector** inputVector);
+  bool StartAssembly(vtkImageData* input);
+  bool ScanSlab(vtkImageData* input, vtkDataArray* array);
+  bool SampleWhole(vtkImageData* input, vtkDataArray* array);
+  void Receive(int z, const float* density, const unsigned char* mask, vtkIdType count);
+  void Emit(int z, const float* density, const unsigned char* mask, vtkIdType count);
   void FinishOutput(vtkImageData* input, vtkPolyData* output, vtkImageData* mask);
   vtkDataArray* GetDensityArray(vtkImageData* input, vtkInformationVector** inputVector);
 };

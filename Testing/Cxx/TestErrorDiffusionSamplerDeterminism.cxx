@@ -28,10 +28,13 @@ bool SamePoints(vtkPolyData* a, vtkPolyData* b)
       static_cast<size_t>(n) * 3 * pa->GetDataTypeSize()) == 0;
 }
 
+// The paper's error diffusion (the relaxation of the default method moves
+// samples of g <= 1/4 only, so g and 1 - g would not mirror each other).
 vtkSmartPointer<vtkImageData> MaskOf(vtkImageData* image, int seed)
 {
   vtkNew<vtkErrorDiffusionSampler> sampler;
   sampler->SetInputData(image);
+  sampler->SetMethodToErrorDiffusion();
   sampler->SetDensityMappingToIdentity();
   sampler->UseNumberOfPointsOff();
   sampler->SetSeed(seed);

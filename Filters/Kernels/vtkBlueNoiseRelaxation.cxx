@@ -1,0 +1,315 @@
+// SPDX-FileCopyrightText: Copyright (c) 2025-2026 the BlueNoiseSampling contributors
+// SPDX-License-Identifier: BSD-3-Clause
+#include "vtkBlueNoiseRelaxation.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace
+{
+// At least 2 * MaximumRadius + 3 layers (the window around the layer being
+// relaxed and the layer just released); a power of two, for the index.
+constexpr int RingSize = 32;
+static_assert(RingSize >= 2 * vtkBlueNoiseRelaxation::MaximumRadius + 3, "ring too small");
+
+// SplitMix64's finalizer over the seed and a voxel.
+std::uint64_t Hash(std::uint64_t seed, int x, int y, int z)
+{
+  std::uint64_t h = seed ^ (static_cast<std::uint64_t>(static_cast<std::uint32_t>(x)) * 0x9E3779B97F4A7C15ULL) ^
+    (static_cast<std::uint64_t>(static_cast<std::uint32_t>(y)) * 0xC2B2AE3D27D4EB4FULL) ^
+    (static_cast<std::uint64_t>(static_cast<std::uint32_t>(z)) * 0x165667B19E3779F9ULL);
+  h = (h ^ (h >> 30)) * 0xBF58476D1CE4E5B9ULL;
+  h = (h ^ (h >> 27)) * 0x94D049BB133111EBULL;
+  return h ^ (h >> 31);
+}
+
+// How far a move may change the density, relative to it.
+constexpr float DensityTolerance = 1.0f / 64.0f;
+
+inline bool Relaxable(float g)
+{
+  return g > 0.0f && g <= vtkBlueNoiseRelaxation::MaximumDensity;
+}
+
+// Offsets searched outwards: 0, -1, 1, -2, 2, ...
+int Outward(int i)
+{
+  return (i & 1) ? -((i + 1) / 2) : i / 2;
+}
+
+const int Faces[6][3] = { { 1, 0, 0 }, { -1, 0, 0 }, { 0, 1, 0 }, { 0, -1, 0 }, { 0, 0, 1 },
+  { 0, 0, -1 } };
+}
+
+//------------------------------------------------------------------------------
+void vtkBlueNoiseRelaxation::Begin(int nx, int ny, int firstZ, std::uint64_t seed)
+{
+  this->NX = std::max(nx, 0);
+  this->NY = std::max(ny, 0);
+  this->WordsPerRow = (this->NX + 63) / 64 + 1; // a spare word: reads may run one past
+  this->First = firstZ;
+  this->Last = firstZ - 1;
+  this->Relaxed = firstZ;
+  this->Finalized = firstZ;
+  this->Seed = seed;
+  this->Moves = 0;
+  const size_t layer = static_cast<size_t>(this->NX) * this->NY;
+  this->Ring.resize(RingSize);
+  for (Slot& slot : this->Ring)
+  {
+    slot.Z = firstZ - RingSize - 1;
+    slot.Density.resize(layer);
+    slot.Mask.resize(layer);
+    slot.Moved.resize(layer);
+    slot.Bits.assign(static_cast<size_t>(this->WordsPerRow) * this->NY, 0);
+  }
+}
+
+//------------------------------------------------------------------------------
+// Layers already final are still read (as neighbours) while in the ring;
+// only the layers from Finalized on can change.
+inline vtkBlueNoiseRelaxation::Slot* vtkBlueNoiseRelaxation::Find(int z)
+{
+  if (z < this->First || z > this->Last)
+  {
+    return nullptr;
+  }
+  Slot& slot = this->Ring[static_cast<size_t>(z - this->First) & (RingSize - 1)];
+  return slot.Z == z ? &slot : nullptr;
+}
+
+//------------------------------------------------------------------------------
+bool vtkBlueNoiseRelaxation::Sample(int x, int y, int z)
+{
+  const Slot* slot = this->Find(z);
+  return slot && (slot->Bits[static_cast<size_t>(y) * this->WordsPerRow + (x >> 6)] >> (x & 63)) & 1;
+}
+
+//------------------------------------------------------------------------------
+float vtkBlueNoiseRelaxation::DensityAt(int x, int y, int z)
+{
+  const Slot* slot = this->Find(z);
+  return slot ? slot->Density[x + static_cast<size_t>(this->NX) * y] : 0.0f;
+}
+
+//------------------------------------------------------------------------------
+void vtkBlueNoiseRelaxation::Set(int x, int y, int z, bool sample)
+{
+  Slot* slot = this->Find(z);
+  std::uint64_t& word = slot->Bits[static_cast<size_t>(y) * this->WordsPerRow + (x >> 6)];
+  const std::uint64_t bit = std::uint64_t(1) << (x & 63);
+  word = sample ? (word | bit) : (word & ~bit);
+  slot->Mask[x + static_cast<size_t>(this->NX) * y] = sample ? 1 : 0;
+}
+
+//------------------------------------------------------------------------------
+// The squared distance from (x, y, z) to the nearest sample other than the
+// `except` voxel within `radius` along each axis, or `best` when none is
+// nearer than that; as soon as one is found at `enough` or nearer, that one.
+// Rows are visited outwards and skipped once they cannot hold anything nearer.
+int vtkBlueNoiseRelaxation::NearestSquared(int x, int y, int z, int radius, int best, int enough,
+  int exceptX, int exceptY, int exceptZ)
+{
+  const int x0 = std::max(0, x - radius);
+  const int x1 = std::min(this->NX - 1, x + radius);
+  // Outwards, |dz| and |dy| never decrease: past `best` nothing nearer remains.
+  for (int i = 0; i < 2 * radius + 1; ++i)
+  {
+    const int dz = Outward(i);
+    if (dz * dz >= best)
+    {
+      break;
+    }
+    const Slot* slot = this->Find(z + dz);
+    if (!slot)
+    {
+      continue;
+    }
+    for (int j = 0; j < 2 * radius + 1; ++j)
+    {
+      const int dy = Outward(j);
+      const int Y = y + dy;
+      if (dz * dz + dy * dy >= best)
+      {
+        break;
+      }
+      if (Y < 0 || Y >= this->NY)
+      {
+        continue;
+      }
+      // The bits x0..x1 of the row: at most 17, in at most two words.
+      const std::uint64_t* row = slot->Bits.data() + static_cast<size_t>(Y) * this->WordsPerRow;
+      const int shift = x0 & 63;
+      std::uint64_t bits = row[x0 >> 6] >> shift;
+      if (shift)
+      {
+        bits |= row[(x0 >> 6) + 1] << (64 - shift);
+      }
+      bits &= (std::uint64_t(1) << (x1 - x0 + 1)) - 1;
+      for (; bits; bits &= bits - 1)
+      {
+        const int X = x0 + __builtin_ctzll(bits);
+        if (X == exceptX && Y == exceptY && z + dz == exceptZ)
+        {
+          continue;
+        }
+        best = std::min(best, (X - x) * (X - x) + dy * dy + dz * dz);
+        if (best <= enough)
+        {
+          return best;
+        }
+      }
+    }
+  }
+  return best;
+}
+
+//------------------------------------------------------------------------------
+void vtkBlueNoiseRelaxation::RelaxSample(int x, int y, int z, float g)
+{
+  if (g != this->LastDensity) // real volumes repeat densities: spare the roots
+  {
+    const double spacing = std::cbrt(1.0 / g);
+    this->Limit = 0.75 * spacing * spacing;
+    this->Radius = std::min(static_cast<int>(std::ceil(0.87 * spacing)) + 1, MaximumRadius);
+    this->LastDensity = g;
+  }
+  // Only whether p has a sample nearer than the limit matters here.
+  const int cap = (this->Radius + 1) * (this->Radius + 1);
+  const int current = this->NearestSquared(
+    x, y, z, this->Radius, std::min(cap, static_cast<int>(std::ceil(this->Limit))), -1, x, y, z);
+  if (current >= this->Limit)
+  {
+    return;
+  }
+  // The six faces in a hashed order (Fisher-Yates on the hash's bits).
+  std::uint64_t h = Hash(this->Seed ^ 0x5DEECE66DULL, x, y, z);
+  int order[6] = { 0, 1, 2, 3, 4, 5 };
+  for (int k = 5; k > 0; --k, h /= 6)
+  {
+    std::swap(order[k], order[h % static_cast<std::uint64_t>(k + 1)]);
+  }
+  // Only to a voxel of nearly the same density: along a density gradient a
+  // rule by distance moves samples one way more than the other (with a
+  // tolerance of 1/8: 3 % fewer points in the sparse end slab of a ramp).
+  int best = current;
+  int target = -1;
+  for (const int face : order)
+  {
+    const int* f = Faces[face];
+    const int X = x + f[0], Y = y + f[1], Z = z + f[2];
+    if (X < 0 || X >= this->NX || Y < 0 || Y >= this->NY || Z < this->Finalized ||
+      !this->Find(Z) || this->Sample(X, Y, Z))
+    {
+      continue;
+    }
+    const float gc = this->DensityAt(X, Y, Z);
+    if (!Relaxable(gc) || std::abs(gc - g) > DensityTolerance * g)
+    {
+      continue;
+    }
+    // A candidate with a sample as near as the best so far cannot win.
+    const int d = this->NearestSquared(X, Y, Z, this->Radius, cap, best, x, y, z);
+    if (d > best)
+    {
+      best = d;
+      target = face;
+    }
+  }
+  if (target >= 0)
+  {
+    const int X = x + Faces[target][0], Y = y + Faces[target][1], Z = z + Faces[target][2];
+    this->Set(x, y, z, false);
+    this->Set(X, Y, Z, true);
+    this->Find(Z)->Moved[X + static_cast<size_t>(this->NX) * Y] = 1; // once is all
+    ++this->Moves;
+  }
+}
+
+//------------------------------------------------------------------------------
+// The samples of layer z, in the hashed order, each given its chance to move.
+void vtkBlueNoiseRelaxation::RelaxLayer(int z)
+{
+  Slot* slot = this->Find(z);
+  this->Order.clear();
+  for (size_t i = 0; i < slot->Mask.size(); ++i)
+  {
+    if (slot->Mask[i] && !slot->Moved[i] && Relaxable(slot->Density[i]))
+    {
+      const int x = static_cast<int>(i % this->NX), y = static_cast<int>(i / this->NX);
+      this->Order.push_back((Hash(this->Seed, x, y, z) & ~std::uint64_t(0xFFFFFFFF)) | i);
+    }
+  }
+  std::sort(this->Order.begin(), this->Order.end());
+  for (const std::uint64_t key : this->Order)
+  {
+    const size_t i = key & 0xFFFFFFFF;
+    // An earlier move may have taken this sample away, or put one here.
+    if (slot->Mask[i] && !slot->Moved[i])
+    {
+      this->RelaxSample(
+        static_cast<int>(i % this->NX), static_cast<int>(i / this->NX), z, slot->Density[i]);
+    }
+  }
+}
+
+//------------------------------------------------------------------------------
+// Layer z is final: no sample will move into or out of it any more.
+void vtkBlueNoiseRelaxation::Release(int z)
+{
+  Slot* slot = this->Find(z);
+  Layer layer;
+  layer.Z = z;
+  layer.Density = slot->Density.data();
+  layer.Mask = slot->Mask.data();
+  layer.Count = std::count(slot->Mask.begin(), slot->Mask.end(), 1);
+  this->Done.push_back(layer);
+  this->Finalized = z + 1;
+}
+
+//------------------------------------------------------------------------------
+const std::vector<vtkBlueNoiseRelaxation::Layer>& vtkBlueNoiseRelaxation::Push(
+  int z, const float* density, const unsigned char* mask)
+{
+  this->Done.clear();
+  this->Last = z;
+  Slot& slot = this->Ring[static_cast<size_t>(z - this->First) & (RingSize - 1)];
+  slot.Z = z;
+  const size_t layer = slot.Mask.size();
+  std::copy(density, density + layer, slot.Density.begin());
+  std::copy(mask, mask + layer, slot.Mask.begin());
+  std::fill(slot.Moved.begin(), slot.Moved.end(), 0);
+  std::fill(slot.Bits.begin(), slot.Bits.end(), 0);
+  for (size_t i = 0; i < layer; ++i)
+  {
+    if (mask[i])
+    {
+      const int x = static_cast<int>(i % this->NX), y = static_cast<int>(i / this->NX);
+      slot.Bits[static_cast<size_t>(y) * this->WordsPerRow + (x >> 6)] |= std::uint64_t(1) << (x & 63);
+    }
+  }
+  for (; this->Relaxed + MaximumRadius <= this->Last; ++this->Relaxed)
+  {
+    this->RelaxLayer(this->Relaxed);
+    if (this->Relaxed - 1 >= this->Finalized)
+    {
+      this->Release(this->Relaxed - 1);
+    }
+  }
+  return this->Done;
+}
+
+//------------------------------------------------------------------------------
+const std::vector<vtkBlueNoiseRelaxation::Layer>& vtkBlueNoiseRelaxation::Flush()
+{
+  this->Done.clear();
+  for (; this->Relaxed <= this->Last; ++this->Relaxed)
+  {
+    this->RelaxLayer(this->Relaxed);
+  }
+  for (int z = this->Finalized; z <= this->Last; ++z)
+  {
+    this->Release(z);
+  }
+  return this->Done;
+}

@@ -1,0 +1,117 @@
+// SPDX-FileCopyrightText: Copyright (c) 2025-2026 the BlueNoiseSampling contributors
+// SPDX-License-Identifier: BSD-3-Clause
+/**
+ * @class   vtkBlueNoiseRelaxation
+ * @brief   One sweep of local moves that spreads clustered samples of a voxel
+ *          point set, layer by layer, without changing their number.
+ *
+ * Error diffusion places its points well on the whole but leaves pairs closer
+ * than the blue-noise spacing now and then; that is most of what it has more
+ * than a Poisson-disk set below the principal frequency. This pass moves each
+ * such point by one voxel, to where it is farthest from its neighbours:
+ *
+ * For every sample p of a layer whose density g(p) is in (0, 1/4] (above, the
+ * moves lower L(g) still but raise S(g): at g = 0.35, 0.00036 to 0.00065 on
+ * a 128^3 cube), in an order given by a hash of the seed and the voxel (each
+ * sample once; one that moved is not moved again): with s = g(p)^(-1/3) the mean spacing of
+ * samples at that density and d(v) the distance from voxel v to the nearest
+ * other sample within the search radius w = min(ceil(0.87 s) + 1, 8) voxels
+ * (w + 1 when there is none), if d(p)^2 < 0.75 s^2, p moves to the one of its
+ * six face neighbours c that is empty, has 0 < g(c) <= 1/4 and
+ * |g(c) - g(p)| <= g(p) / 64, lies in the layers given (between the first
+ * and the last), and has the largest d(c), provided d(c) > d(p) (the first in
+ * a hashed order among equals). Allowed to a voxel of another density,
+ * samples drift: out of a dense region into a sparse one next to it (a third
+ * more points in the 16 layers below a step from g = 0.2 to 0.02), and,
+ * along a gradient, one way more than the other (3 % on a ramp with a
+ * tolerance of 1/8). Moves to
+ * the 6 face neighbours keep the spectrum isotropic (moves to the 26
+ * neighbours reach a lower L(g) but add up to 0.8 dB of anisotropy).
+ *
+ * Measured on 128^3 cubes (Table 1, 2 seeds): L(g) from 0.0903 to 0.0696 at
+ * g = 8/255 and from 0.1826 to 0.1411 at 16/255 (a Poisson-disk set of the
+ * same count: 0.0775 and 0.1644), S(g) lower, anisotropy unchanged.
+ *
+ * Streaming: Push() one layer after another (densities and mask, x fastest);
+ * once the layers from z - 1 to z + w are in, layer z is relaxed (its samples
+ * may move into z - 1, z or z + 1) and layer z - 1 becomes final: Push
+ * returns the final layers, and Flush() the rest after the last one. Memory:
+ * a ring of 32 layers of densities and masks (6 bytes and 1 bit per voxel).
+ */
+#ifndef vtkBlueNoiseRelaxation_h
+#define vtkBlueNoiseRelaxation_h
+
+#include "vtkFiltersBlueNoiseModule.h" // for export macro
+#include "vtkType.h"                   // for vtkIdType
+
+#include <cstdint>
+#include <vector>
+
+class VTKFILTERSBLUENOISE_EXPORT vtkBlueNoiseRelaxation
+{
+public:
+  /// A layer the pass is done with: its (relaxed) mask and its densities.
+  struct Layer
+  {
+    int Z = 0;
+    const float* Density = nullptr;
+    unsigned char* Mask = nullptr; ///< writable: it is the pass's own copy
+    vtkIdType Count = 0;           ///< samples in the layer
+  };
+
+  static constexpr int MaximumRadius = 8;
+  static constexpr float MaximumDensity = 0.25f;
+
+  /// Start a run over layers of nx * ny voxels, the first one being z.
+  void Begin(int nx, int ny, int firstZ, std::uint64_t seed);
+
+  /**
+   * Add the next layer (global index z = the previous one + 1). Returns the
+   * layers that became final (valid until the next call of Push or Flush).
+   */
+  const std::vector<Layer>& Push(int z, const float* density, const unsigned char* mask);
+
+  /// After the last layer: relax what is left and return every other layer.
+  const std::vector<Layer>& Flush();
+
+  /// Samples moved so far.
+  vtkIdType GetNumberOfMoves() const { return this->Moves; }
+
+private:
+  struct Slot
+  {
+    int Z = 0;
+    std::vector<float> Density;
+    std::vector<unsigned char> Mask;
+    std::vector<unsigned char> Moved; // samples that moved here: they move no more
+    std::vector<std::uint64_t> Bits; // the mask, rows padded to whole words
+  };
+
+  Slot* Find(int z);
+  bool Sample(int x, int y, int z);
+  float DensityAt(int x, int y, int z);
+  void Set(int x, int y, int z, bool sample);
+  int NearestSquared(int x, int y, int z, int radius, int best, int enough, int exceptX,
+    int exceptY, int exceptZ);
+  void RelaxLayer(int z);
+  void RelaxSample(int x, int y, int z, float g);
+  void Release(int z);
+
+  int NX = 0;
+  int NY = 0;
+  int WordsPerRow = 0;
+  int First = 0;     // first layer of the run
+  int Last = -1;     // last layer pushed
+  int Relaxed = 0;   // layers below this one are relaxed
+  int Finalized = 0; // layers below this one were returned
+  std::uint64_t Seed = 0;
+  vtkIdType Moves = 0;
+  float LastDensity = -1.0f; // the density Limit and Radius are for
+  double Limit = 0.0;
+  int Radius = 1;
+  std::vector<Slot> Ring;
+  std::vector<Layer> Done;
+  std::vector<std::uint64_t> Order; // hash and index of a layer's samples
+};
+
+#endif
