@@ -1071,20 +1071,39 @@ bool vtkBlueNoiseSpectrumKernel::GetCentredPowerSpectrum(double* out) const
         for (int j = 0; j < ly; ++j)
         {
           const int ky = (j - ly / 2 + ly) % ly;
-          // Frequencies with kx > Lx / 2 are the conjugate mirrors of stored ones.
+          // Frequencies with kx > Lx / 2 are the conjugate mirrors of stored
+          // ones. Index i holds kx = i - floor(Lx / 2), folded into [0, Lx).
           const double* direct = power.Row(ky, kz);
           const double* mirror = power.Row((ly - ky) % ly, (lz - kz) % lz);
-          for (int i = 0; i < lx; ++i)
+          for (int kx = lx - lx / 2; kx < lx; ++kx)
           {
-            const int kx = (i - lx / 2 + lx) % lx;
-            const double v = (kx <= lx / 2) ? direct[kx * step] : mirror[(lx - kx) * step];
-            *dst++ = v * invR;
+            *dst++ = (kx <= lx / 2 ? direct[kx * step] : mirror[(lx - kx) * step]) * invR;
+          }
+          for (int kx = 0; kx < lx - lx / 2; ++kx)
+          {
+            *dst++ = direct[kx * step] * invR;
           }
         }
       }
     });
   out[(static_cast<std::size_t>(lz / 2) * ly + ly / 2) * lx + lx / 2] = 0.0;
   return true;
+}
+
+//------------------------------------------------------------------------------
+double* vtkBlueNoiseSpectrumKernel::NewCentredPowerSpectrum() const
+{
+  if (this->Realisations == 0)
+  {
+    return nullptr;
+  }
+  double* out = AllocateLarge(
+    static_cast<std::size_t>(this->Dimensions[0]) * this->Dimensions[1] * this->Dimensions[2]);
+  if (out)
+  {
+    this->GetCentredPowerSpectrum(out);
+  }
+  return out;
 }
 
 //------------------------------------------------------------------------------

@@ -187,6 +187,14 @@ public:
   bool GetCentredPowerSpectrum(double* out) const;
 
   /**
+   * The same in new memory, committed in bulk like the kernel's own buffers
+   * (a gigabyte at 512^3); release it with free() (vtkAbstractArray's
+   * VTK_DATA_ARRAY_FREE). Null when no realisation has been added or the
+   * memory cannot be allocated.
+   */
+  double* NewCentredPowerSpectrum() const;
+
+  /**
    * One-call evaluation of a single mask for the optimiser. Reuses one kernel
    * per calling thread, so repeated calls with the same shape allocate nothing;
    * that kernel's buffers live until the thread ends.

@@ -56,14 +56,25 @@
  * matrix. A mask with every voxel set (g = 1) has no power off DC: a warning,
  * and L = 0, anisotropy 0, S = 1 by convention.
  *
- * Caveats: the whole spectrum needs every realisation in full, so the filter
- * asks for the whole extent and piece 0 of 1 of its inputs (each rank of a
- * parallel run computes the full metric of what it is given). When the grid
- * comes from field data, the spectrum image's whole extent is known only once
- * the filter has executed; RequestInformation announces the best guess (the
- * input image's extent or GridDimensions) and RequestData corrects it.
- * Memory is about 12 bytes per voxel of the grid, plus 4 bytes per voxel for
- * binned point inputs and 8 per voxel for the spectrum image.
+ * Pipeline: the whole spectrum needs every realisation in full, so the filter
+ * asks for the whole extent and piece 0 of 1 of its inputs (each process of a
+ * parallel run computes the full metric of what it is given; vtkPBlueNoiseSpectrum
+ * computes it once from the pieces of all processes). One update executes the
+ * filter once for both outputs. The spectrum image's whole extent is announced
+ * in RequestInformation from what the input's information tells: an image's
+ * extent, the sampled image's extent that vtkErrorDiffusionSampler's output
+ * information carries, or GridDimensions with UseInputGrid off; an empty extent
+ * when GenerateSpectrumImage is off. A point set whose information carries no
+ * extent may still hold the sampler's grid in its field data, which only the
+ * data tells: then the whole extent is announced empty and set by RequestData,
+ * so that no consumer can ask for an extent the data will not have. (A point
+ * set whose information carries an extent but whose data has no sampling grid
+ * uses GridDimensions, which differs from what was announced; a consumer that
+ * asks for the announced extent then executes the filter again.)
+ *
+ * Memory: the kernel's (about 8 bytes per voxel of the grid for one
+ * realisation, 12 for several), 16 bytes per binned point, and 8 bytes per
+ * voxel for the spectrum image.
  *
  * @sa vtkBlueNoiseSpectrumKernel vtkErrorDiffusionSampler
  */
@@ -73,6 +84,9 @@
 #include "vtkFiltersBlueNoiseModule.h" // for export macro
 #include "vtkTableAlgorithm.h"
 
+#include <vector> // for the hooks of distributed subclasses
+
+class vtkBlueNoiseSpectrumKernel;
 class vtkImageData;
 
 class VTKFILTERSBLUENOISE_EXPORT vtkBlueNoiseSpectrum : public vtkTableAlgorithm
@@ -139,6 +153,13 @@ public:
   /// Add one more realisation (a new connection on the repeatable input port).
   void AddInputData(vtkDataObject* input) { this->AddInputDataObject(0, input); }
 
+  /**
+   * The number of realisations this process transformed in its last
+   * execution: all of them in a serial run, none on the processes of a
+   * distributed run (vtkPBlueNoiseSpectrum) that only contribute samples.
+   */
+  vtkGetMacro(NumberOfTransformedRealizations, int);
+
 protected:
   vtkBlueNoiseSpectrum();
   ~vtkBlueNoiseSpectrum() override;
@@ -149,18 +170,64 @@ protected:
   int RequestUpdateExtent(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
   int RequestData(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
 
+  ///@{
+  /**
+   * Where the work happens, for distributed subclasses (vtkPBlueNoiseSpectrum).
+   * The serial filter computes everything from what its own process holds.
+   * - IsRootProcess(): whether this process transforms the realisations,
+   *   computes the metric and fills the outputs (the others leave them empty).
+   * - IsDistributed(): whether the pieces of one realisation may lie on other
+   *   processes (image pieces are then sent voxel by voxel, each voxel once).
+   * - ShareDescriptions(records): `records` holds this process's grid
+   *   descriptions (vtkBlueNoiseSpectrumGrid::Description::Pack); on return it
+   *   holds those of every process, in the same order on every process.
+   * - GatherSamples(voxels, values, counters): one realisation's binned samples
+   *   of this process (values empty: one point each) and its counters (samples
+   *   outside the grid, samples binned); on return, on the root process, those
+   *   of every process in process order, the counters summed.
+   * - AllSucceeded(ok): true when every process succeeded; each process
+   *   reports its own errors.
+   * - IsAborted(): the abort flag, the same on every process.
+   */
+  virtual bool IsRootProcess() { return true; }
+  virtual bool IsDistributed() { return false; }
+  virtual bool ShareDescriptions(std::vector<double>& records);
+  virtual bool GatherSamples(
+    std::vector<long long>& voxels, std::vector<double>& values, long long counters[2]);
+  virtual bool AllSucceeded(bool ok) { return ok; }
+  virtual bool IsAborted();
+  ///@}
+
+  /**
+   * Both outputs come from one execution: the piece asked for on one output
+   * becomes the request of the other too, so that the executive records one
+   * request for both and a later request of the other output finds it met.
+   */
+  static void ShareOutputRequest(vtkInformation* request, vtkInformationVector* outputVector);
+
   double Weight = 0.02;
   bool UseInputGrid = true;
   int GridDimensions[3] = { 64, 64, 64 };
   double GridBounds[6] = { 0.0, 1.0, 0.0, 1.0, 0.0, 1.0 };
   bool UseGridBounds = false;
   bool GenerateSpectrumImage = true;
+  int NumberOfTransformedRealizations = 0;
 
 private:
   vtkBlueNoiseSpectrum(const vtkBlueNoiseSpectrum&) = delete;
   void operator=(const vtkBlueNoiseSpectrum&) = delete;
 
-  bool IsAborted();
+  struct Realization; // one realisation: this process's piece and the whole's grid
+
+  // The steps of RequestData.
+  bool ValidateInputs(vtkInformationVector** inputVector, std::vector<Realization>& pieces);
+  bool DescribePiece(Realization& piece, int index);
+  bool CombinePieces(std::vector<Realization>& pieces, std::vector<Realization>& realizations);
+  bool BuildGrids(std::vector<Realization>& realizations);
+  int Accumulate(const std::vector<Realization>& realizations, vtkBlueNoiseSpectrumKernel& kernel);
+  bool AddRealization(const Realization& realization, int index, vtkBlueNoiseSpectrumKernel& kernel,
+    long long counters[2]);
+  bool AnnouncedDimensions(vtkInformationVector** inputVector, int dims[3]);
 };
 
 #endif
