@@ -62,6 +62,18 @@ void Take(const double*& in, T* values, int n)
   }
 }
 
+// The arrays of a description after its six scalars, in packing order.
+template <typename D, typename Visit>
+void VisitArrays(D& d, Visit visit)
+{
+  visit(d.ImageExtent, 6);
+  visit(d.Origin, 3);
+  visit(d.Spacing, 3);
+  visit(d.Direction, 9);
+  visit(d.Extent, 6);
+  visit(d.Bounds, 6);
+}
+
 void UniteExtents(int* into, const int* extent)
 {
   for (int a = 0; a < 3; ++a)
@@ -79,12 +91,7 @@ void vtkBlueNoiseSpectrumGrid::Description::Pack(double* out) const
     static_cast<double>(this->NumberOfPoints), this->IsImage ? 1.0 : 0.0,
     this->CellArray ? 1.0 : 0.0, this->HasSamplingGrid ? 1.0 : 0.0 };
   Put(out, head, 6);
-  Put(out, this->ImageExtent, 6);
-  Put(out, this->Origin, 3);
-  Put(out, this->Spacing, 3);
-  Put(out, this->Direction, 9);
-  Put(out, this->Extent, 6);
-  Put(out, this->Bounds, 6);
+  VisitArrays(*this, [&out](const auto* values, int n) { Put(out, values, n); });
   static_assert(PackedSize == 6 + 6 + 3 + 3 + 9 + 6 + 6, "PackedSize and the layout differ");
 }
 
@@ -99,12 +106,7 @@ void vtkBlueNoiseSpectrumGrid::Description::Unpack(const double* in)
   this->IsImage = head[3] != 0.0;
   this->CellArray = head[4] != 0.0;
   this->HasSamplingGrid = head[5] != 0.0;
-  Take(in, this->ImageExtent, 6);
-  Take(in, this->Origin, 3);
-  Take(in, this->Spacing, 3);
-  Take(in, this->Direction, 9);
-  Take(in, this->Extent, 6);
-  Take(in, this->Bounds, 6);
+  VisitArrays(*this, [&in](auto* values, int n) { Take(in, values, n); });
 }
 
 //------------------------------------------------------------------------------

@@ -3,7 +3,8 @@
 // Time of the blue-noise spectrum metric for one realisation: a random mask at
 // g = 0.05 on L^3 grids, on 1 thread and on every core (vtkSMPTools' STDThread
 // backend, whatever the default backend is).
-//   Fresh      a new kernel: buffers allocated and committed, plans cached
+//   Fresh      a new kernel in every run: buffers allocated, committed and
+//              released (plans are cached for the process)
 //   Reused     Reset + AddRealisation + Compute on a kernel kept between runs
 //   Transform  AddRealisation alone (FFT and power), Compute the shell pass alone
 //   Filter     vtkBlueNoiseSpectrum on the mask's points (sampler field data),
@@ -32,6 +33,7 @@
 #include <cstdio>
 #include <cstring>
 #include <map>
+#include <memory>
 #include <random>
 #include <string>
 #include <thread>
@@ -115,83 +117,67 @@ void SetVoxelCounters(benchmark::State& state, int n)
     static_cast<double>(n) * n * n, benchmark::Counter::kIsIterationInvariantRate);
 }
 
-void BM_Fresh(benchmark::State& state)
+enum class Stage
+{
+  Fresh,
+  Reused,
+  Transform,
+  Compute
+};
+
+// One kernel stage; the kernel is set up (plans made, buffers committed)
+// before timing, and Fresh replaces it by a new one in every run.
+void RunKernel(benchmark::State& state, Stage stage)
 {
   const int n = static_cast<int>(state.range(0));
   const std::vector<unsigned char>& mask = RandomMask(n);
   WithThreads(static_cast<int>(state.range(1)),
     [&]()
     {
+      auto kernel = std::make_unique<vtkBlueNoiseSpectrumKernel>();
+      kernel->SetDimensions(n, n, n);
+      kernel->AddRealisation(mask.data());
       vtkBlueNoiseSpectrumKernel::Result result;
       for (auto _ : state)
       {
-        vtkBlueNoiseSpectrumKernel kernel;
-        kernel.SetDimensions(n, n, n);
-        kernel.AddRealisation(mask.data());
-        kernel.Compute(result);
-        benchmark::DoNotOptimize(result.TargetValue);
+        if (stage == Stage::Fresh)
+        {
+          kernel = std::make_unique<vtkBlueNoiseSpectrumKernel>();
+          kernel->SetDimensions(n, n, n);
+        }
+        if (stage != Stage::Compute)
+        {
+          kernel->Reset();
+          kernel->AddRealisation(mask.data());
+        }
+        if (stage != Stage::Transform)
+        {
+          kernel->Compute(result);
+          benchmark::DoNotOptimize(result.TargetValue);
+        }
       }
     });
   SetVoxelCounters(state, n);
+}
+
+void BM_Fresh(benchmark::State& state)
+{
+  RunKernel(state, Stage::Fresh);
 }
 
 void BM_Reused(benchmark::State& state)
 {
-  const int n = static_cast<int>(state.range(0));
-  const std::vector<unsigned char>& mask = RandomMask(n);
-  WithThreads(static_cast<int>(state.range(1)),
-    [&]()
-    {
-      vtkBlueNoiseSpectrumKernel kernel;
-      kernel.SetDimensions(n, n, n);
-      vtkBlueNoiseSpectrumKernel::Result result;
-      for (auto _ : state)
-      {
-        kernel.Reset();
-        kernel.AddRealisation(mask.data());
-        kernel.Compute(result);
-        benchmark::DoNotOptimize(result.TargetValue);
-      }
-    });
-  SetVoxelCounters(state, n);
+  RunKernel(state, Stage::Reused);
 }
 
 void BM_Transform(benchmark::State& state)
 {
-  const int n = static_cast<int>(state.range(0));
-  const std::vector<unsigned char>& mask = RandomMask(n);
-  WithThreads(static_cast<int>(state.range(1)),
-    [&]()
-    {
-      vtkBlueNoiseSpectrumKernel kernel;
-      kernel.SetDimensions(n, n, n);
-      for (auto _ : state)
-      {
-        kernel.Reset();
-        kernel.AddRealisation(mask.data());
-      }
-    });
-  SetVoxelCounters(state, n);
+  RunKernel(state, Stage::Transform);
 }
 
 void BM_Compute(benchmark::State& state)
 {
-  const int n = static_cast<int>(state.range(0));
-  const std::vector<unsigned char>& mask = RandomMask(n);
-  WithThreads(static_cast<int>(state.range(1)),
-    [&]()
-    {
-      vtkBlueNoiseSpectrumKernel kernel;
-      kernel.SetDimensions(n, n, n);
-      kernel.AddRealisation(mask.data());
-      vtkBlueNoiseSpectrumKernel::Result result;
-      for (auto _ : state)
-      {
-        kernel.Compute(result);
-        benchmark::DoNotOptimize(result.TargetValue);
-      }
-    });
-  SetVoxelCounters(state, n);
+  RunKernel(state, Stage::Compute);
 }
 
 void RunFilter(benchmark::State& state, bool image)

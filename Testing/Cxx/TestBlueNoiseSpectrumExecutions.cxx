@@ -101,46 +101,22 @@ void CheckOneExecution(vtkBlueNoiseSpectrum* filter, bool image, const std::stri
   filter->RemoveObserver(tag);
 }
 
-template <typename ArrayT>
-void AddField(vtkPolyData* data, const char* name, std::vector<double> values)
-{
-  vtkNew<ArrayT> array;
-  array->SetName(name);
-  array->SetNumberOfComponents(static_cast<int>(values.size()));
-  array->SetNumberOfTuples(1);
-  for (std::size_t i = 0; i < values.size(); ++i)
-  {
-    array->SetComponent(0, static_cast<int>(i), values[i]);
-  }
-  data->GetFieldData()->AddArray(array);
-}
-
 // Points at the set voxels of a random 20 x 24 x 16 mask, with the sampler's
 // field data and nothing in the pipeline information.
 vtkSmartPointer<vtkPolyData> FieldDataPoints(std::mt19937& rng)
 {
   const int dims[3] = { 20, 24, 16 };
-  const std::vector<unsigned char> mask = RandomMask(dims, 0.1, rng);
-  vtkNew<vtkPoints> points;
-  std::size_t v = 0;
-  for (int k = 0; k < dims[2]; ++k)
-  {
-    for (int j = 0; j < dims[1]; ++j)
+  auto data = MaskPoints(RandomMask(dims, 0.1, rng), dims,
+    [](int i, int j, int k, double x[3])
     {
-      for (int i = 0; i < dims[0]; ++i, ++v)
-      {
-        if (mask[v])
-        {
-          points->InsertNextPoint(i, j, k);
-        }
-      }
-    }
-  }
-  auto data = vtkSmartPointer<vtkPolyData>::New();
-  data->SetPoints(points);
-  AddField<vtkDoubleArray>(data, "SamplingGridOrigin", { 0, 0, 0 });
-  AddField<vtkDoubleArray>(data, "SamplingGridSpacing", { 1, 1, 1 });
-  AddField<vtkIntArray>(data, "SamplingGridExtent", { 0, 19, 0, 23, 0, 15 });
+      x[0] = i;
+      x[1] = j;
+      x[2] = k;
+    });
+  const double origin[3] = { 0, 0, 0 };
+  const double spacing[3] = { 1, 1, 1 };
+  const int extent[6] = { 0, 19, 0, 23, 0, 15 };
+  AddSamplingGrid(data, origin, spacing, extent);
   return data;
 }
 }
