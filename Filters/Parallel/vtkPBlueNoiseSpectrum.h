@@ -27,9 +27,9 @@
  *
  * The metric is that of vtkBlueNoiseSpectrum on the data of all pieces
  * appended in process order: the same to the last bit for point sets and
- * images read as counts; for an image's weighted point centres (UseInputGrid
+ * images read as counts; for an image's weighted point centers (UseInputGrid
  * off) up to the rounding of the single-precision sums on voxels that gather
- * centres from several pieces.
+ * centers from several pieces.
  *
  * Composite inputs: leaves are matched across processes by their flat index.
  * Every process must execute the filter (it communicates), and an abort

@@ -46,10 +46,10 @@ enum class SignalKind
 {
   ImageArray,    // an image's own grid, the array values are the counts
   Points,        // points binned to a grid
-  WeightedPoints // an image's point or cell centres, weighted by the array, binned
+  WeightedPoints // an image's point or cell centers, weighted by the array, binned
 };
 
-// One realisation's samples on this process: voxel indices of the analysis
+// One realization's samples on this process: voxel indices of the analysis
 // grid and their values (empty: one point each), and the counters of the
 // "outside the grid" warning.
 struct Samples
@@ -81,7 +81,7 @@ std::vector<std::pair<int, vtkDataObject*>> Leaves(vtkDataObject* input)
   return leaves;
 }
 
-// Checks the input array of an image realisation: one component of point or
+// Checks the input array of an image realization: one component of point or
 // cell data, one value per point or cell.
 bool CheckImageArray(
   vtkImageData* image, vtkDataArray* array, int association, bool& cells, std::string& error)
@@ -176,7 +176,7 @@ void CheckBoundsGrid(const int dims[3], const double bounds[6], std::ostringstre
   }
 }
 
-// Realisation i's grid against realisation 0's: one shape, at least 2 on every axis.
+// Realization i's grid against realization 0's: one shape, at least 2 on every axis.
 void CheckShape(const int* dims, const int* first, std::size_t i, std::ostringstream& error)
 {
   if (i == 0 && (dims[0] < 2 || dims[1] < 2 || dims[2] < 2))
@@ -221,7 +221,7 @@ void BinPoints(vtkPointSet* data, const vtkBlueNoiseSpectrumGrid& grid, Samples&
   samples.Counters[1] += n;
 }
 
-// An image's point or cell centres (half a voxel in, except along a flat axis
+// An image's point or cell centers (half a voxel in, except along a flat axis
 // of a 2D image), weighted by the array values, to their nearest grid points.
 bool BinImageCentres(vtkImageData* image, vtkDataArray* array, bool cells, const int wholePoints[6],
   const vtkBlueNoiseSpectrumGrid& grid, Samples& samples, std::string& error)
@@ -287,7 +287,7 @@ void ImageArraySamples(
     });
 }
 
-// An image's array as one realisation on its own grid: uint8, float and
+// An image's array as one realization on its own grid: uint8, float and
 // double arrays as they are, other types converted to double.
 bool AddImageArray(vtkBlueNoiseSpectrumKernel& kernel, vtkDataArray* array, std::string& error)
 {
@@ -433,7 +433,7 @@ bool FillSpectrumImage(vtkBlueNoiseSpectrumKernel& kernel, const int dims[3], vt
 }
 
 //------------------------------------------------------------------------------
-// One realisation: this process's piece of it (Data null when it has none),
+// One realization: this process's piece of it (Data null when it has none),
 // its description (this piece's, then, once combined, the whole's), and the
 // analysis grid with the kind of signal.
 struct vtkBlueNoiseSpectrum::Realization
@@ -551,7 +551,7 @@ int vtkBlueNoiseSpectrum::RequestUpdateExtent(
   vtkInformation* request, vtkInformationVector** inputVector, vtkInformationVector* outputVector)
 {
   ShareOutputRequest(request, outputVector);
-  // The spectrum needs every realisation whole.
+  // The spectrum needs every realization whole.
   const auto sddp = vtkStreamingDemandDrivenPipeline::WHOLE_EXTENT();
   for (int c = 0; c < inputVector[0]->GetNumberOfInformationObjects(); ++c)
   {
@@ -651,7 +651,7 @@ int vtkBlueNoiseSpectrum::RequestData(
 bool vtkBlueNoiseSpectrum::ValidateInputs(
   vtkInformationVector** inputVector, std::vector<Realization>& pieces)
 {
-  // Every non-empty leaf of every connection is a realisation.
+  // Every non-empty leaf of every connection is a realization.
   bool ok = true;
   for (int c = 0; ok && c < inputVector[0]->GetNumberOfInformationObjects(); ++c)
   {
@@ -733,7 +733,7 @@ bool vtkBlueNoiseSpectrum::CombinePieces(
   {
     return false;
   }
-  // One realisation per (connection, leaf), in that order, merged over the
+  // One realization per (connection, leaf), in that order, merged over the
   // pieces of every process; this process's piece keeps its data.
   std::vector<Description> all(records.size() / Description::PackedSize);
   for (std::size_t i = 0; i < all.size(); ++i)
@@ -784,7 +784,7 @@ bool vtkBlueNoiseSpectrum::CombinePieces(
 //------------------------------------------------------------------------------
 bool vtkBlueNoiseSpectrum::BuildGrids(std::vector<Realization>& realizations)
 {
-  // The analysis grid of each realisation (rules 1-3 of the class comment).
+  // The analysis grid of each realization (rules 1-3 of the class comment).
   double bounds[6] = { VTK_DOUBLE_MAX, -VTK_DOUBLE_MAX, VTK_DOUBLE_MAX, -VTK_DOUBLE_MAX,
     VTK_DOUBLE_MAX, -VTK_DOUBLE_MAX };
   bool needBounds = false;

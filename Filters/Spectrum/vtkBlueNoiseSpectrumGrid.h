@@ -4,7 +4,7 @@
  * @class   vtkBlueNoiseSpectrumGrid
  * @brief   The analysis grid of one realization of vtkBlueNoiseSpectrum.
  *
- * Plain C++ (not wrapped). The grid points (voxel centres) are
+ * Plain C++ (not wrapped). The grid points (voxel centers) are
  * x = Origin + D ((Lower + ijk) * Spacing) for ijk in [0, Dimensions), D the
  * direction matrix; Locate() gives the grid point nearest to a position.
  *

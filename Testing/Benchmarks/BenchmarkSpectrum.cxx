@@ -1,6 +1,6 @@
 // SPDX-FileCopyrightText: Copyright (c) 2025-2026 the BlueNoiseSampling contributors
 // SPDX-License-Identifier: BSD-3-Clause
-// Time of the blue-noise spectrum metric for one realisation: a random mask at
+// Time of the blue-noise spectrum metric for one realization: a random mask at
 // g = 0.05 on L^3 grids, on 1 thread and on every core (vtkSMPTools' STDThread
 // backend, whatever the default backend is).
 //   Fresh      a new kernel in every run: buffers allocated, committed and

@@ -1,8 +1,8 @@
 // SPDX-FileCopyrightText: Copyright (c) 2025-2026 the BlueNoiseSampling contributors
 // SPDX-License-Identifier: BSD-3-Clause
 // The kernel on 1, 2 and 3 vtkSMPTools threads (STDThread backend): every
-// reported value and the centred spectrum must be the same to the last bit,
-// for one realisation (power kept in the transform buffer) and for two (the
+// reported value and the centered spectrum must be the same to the last bit,
+// for one realization (power kept in the transform buffer) and for two (the
 // averaged sum), for masks and for samples. Grids are large enough to be
 // split into several tasks in every pass, with odd and even lengths. Samples
 // given as voxel indices must also give exactly what the float count volume
