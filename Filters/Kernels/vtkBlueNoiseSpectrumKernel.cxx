@@ -10,12 +10,20 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <cstdlib>
 #include <cstring>
 #include <limits>
 #include <map>
 #include <mutex>
 #include <sstream>
 #include <type_traits>
+
+#if defined(__linux__)
+#include <sys/mman.h>
+#ifndef MADV_POPULATE_WRITE
+#define MADV_POPULATE_WRITE 23 // Linux 5.14; older kernels answer EINVAL
+#endif
+#endif
 
 namespace
 {
@@ -35,12 +43,82 @@ void SetError(std::string* error, const std::string& message)
   }
 }
 
+// At least 2^18 values per task: below that, threads cost more than they
+// save (a 64^3 grid runs on the calling thread).
+constexpr vtkIdType ValuesPerTask = vtkIdType(1) << 18;
+
+vtkIdType SlabGrain(int lx, int ly)
+{
+  return std::max<vtkIdType>(1, ValuesPerTask / (static_cast<vtkIdType>(lx) * ly));
+}
+
+//------------------------------------------------------------------------------
+// The buffers of a large grid (a gigabyte at 512^3) are committed in bulk
+// before the transform writes them. Faulting them in page by page as the
+// first write reaches them costs more than the transform on virtual machines
+// that trap every fault (3.3 s per GiB measured on the 2-core development VM,
+// against under 1 s in bulk), and transparent huge pages cut the number of
+// pages by 512 where the system offers them. Small buffers (an optimizer's
+// grids) are left to the usual first touch. The memory comes from
+// posix_memalign, so free() releases it; either alignment satisfies FFTW.
+constexpr std::size_t LargeBytes = std::size_t(1) << 24;     // 16 MiB
+constexpr std::size_t LargeAlignment = std::size_t(1) << 21; // 2 MiB: huge pages
+constexpr std::size_t SmallAlignment = 64;
+constexpr std::size_t CommitChunk = std::size_t(1) << 26; // 64 MiB per task
+
+void CommitPages(char* begin, std::size_t bytes)
+{
+#if defined(__linux__) && defined(MADV_HUGEPAGE)
+  madvise(begin, bytes, MADV_HUGEPAGE); // advice only: a failure changes nothing
+#endif
+#if defined(__linux__)
+  const vtkIdType chunks = static_cast<vtkIdType>((bytes + CommitChunk - 1) / CommitChunk);
+  vtkSMPTools::For(0, chunks, 1,
+    [&](vtkIdType first, vtkIdType last)
+    {
+      for (vtkIdType c = first; c < last; ++c)
+      {
+        char* chunk = begin + c * CommitChunk;
+        const std::size_t size =
+          std::min(CommitChunk, bytes - static_cast<std::size_t>(c) * CommitChunk);
+        if (madvise(chunk, size, MADV_POPULATE_WRITE) != 0)
+        {
+          std::memset(chunk, 0, size); // no bulk commit here: first touch, in parallel
+        }
+      }
+    });
+#else
+  (void)begin;
+  (void)bytes;
+#endif
+}
+
+double* AllocateLarge(std::size_t count)
+{
+  const std::size_t bytes = count * sizeof(double);
+  const bool large = bytes >= LargeBytes;
+  void* memory = nullptr;
+  if (posix_memalign(&memory, large ? LargeAlignment : SmallAlignment, bytes) != 0)
+  {
+    return nullptr;
+  }
+  if (large)
+  {
+    CommitPages(static_cast<char*>(memory), bytes);
+  }
+  return static_cast<double*>(memory);
+}
+
+//------------------------------------------------------------------------------
 // Transforms per grid shape: a 2D real-to-complex transform of one z slab
 // (in place, rows padded to 2 * (Lx / 2 + 1) doubles) and a batch of
 // ColumnBlock 1D transforms along z over a small gathered block. FFTW's one-call
-// 3D plan strides through the whole volume for its z pass; at 256^3 with
-// FFTW_ESTIMATE that is 4 times slower than transforming z in blocks that stay
-// in cache (and as fast as an FFTW_MEASURE plan, without its seconds of planning).
+// 3D plan strides through the whole volume for its z pass: at 512^3 with
+// FFTW_ESTIMATE it takes 3.5 s on one core and 1.9 s with two FFTW threads,
+// against 0.8 s on one core for slabs and in-cache column blocks. Slabs and
+// blocks are independent, so they are spread over vtkSMPTools threads, every
+// one executing the same single-threaded plans: the result does not depend on
+// the number of threads.
 constexpr int ColumnBlock = 8;
 
 struct TransformPlans
@@ -51,10 +129,10 @@ struct TransformPlans
 
 // FFTW's planner is not thread-safe, so every plan is made (and destroyed) under
 // one lock; executing a plan on new arrays is thread-safe. Plans are kept for
-// the life of the process: an optimiser evaluates one or two shapes many
-// thousand times, and a plan is small next to its buffers. Every buffer comes
-// from fftw_malloc and slabs start at multiples of 64 bytes, so all arrays
-// share the alignment the plans were made with.
+// the life of the process: an optimizer evaluates one or two shapes many
+// thousand times, and a plan is small next to its buffers. Plans are made on
+// arrays aligned like every array they later run on (slabs start at multiples
+// of 64 bytes of 2 MiB aligned buffers, column blocks come from fftw_malloc).
 class PlanCache
 {
 public:
@@ -64,7 +142,7 @@ public:
     return cache;
   }
 
-  TransformPlans Get(const int dims[3], double* slab, fftw_complex* columns)
+  TransformPlans Get(const int dims[3], double* slab)
   {
     std::lock_guard<std::mutex> lock(this->Mutex);
     const std::array<int, 3> key{ { dims[0], dims[1], dims[2] } };
@@ -73,13 +151,17 @@ public:
     {
       return it->second;
     }
-    // FFTW_ESTIMATE leaves the buffers untouched while planning.
+    // FFTW_ESTIMATE leaves the arrays untouched while planning.
     TransformPlans plans;
     plans.Slab = fftw_plan_dft_r2c_2d(
       dims[1], dims[0], slab, reinterpret_cast<fftw_complex*>(slab), FFTW_ESTIMATE);
+    auto* columns = static_cast<fftw_complex*>(
+      fftw_malloc(sizeof(fftw_complex) * ColumnBlock * static_cast<std::size_t>(dims[2])));
     const int n[1] = { dims[2] };
-    plans.Columns = fftw_plan_many_dft(1, n, ColumnBlock, columns, nullptr, ColumnBlock, 1, columns,
-      nullptr, ColumnBlock, 1, FFTW_FORWARD, FFTW_ESTIMATE);
+    plans.Columns = columns ? fftw_plan_many_dft(1, n, ColumnBlock, columns, nullptr, ColumnBlock,
+                                1, columns, nullptr, ColumnBlock, 1, FFTW_FORWARD, FFTW_ESTIMATE)
+                            : nullptr;
+    fftw_free(columns);
     if (plans.Slab && plans.Columns)
     {
       this->Plans.emplace(key, plans);
@@ -118,6 +200,105 @@ private:
   std::map<std::array<int, 3>, TransformPlans> Plans;
 };
 
+// One thread's block of ColumnBlock columns along z, allocated on first use
+// (a copy, as vtkSMPThreadLocal makes of its exemplar, starts without one).
+// The last block of a pass transforms some stale lanes, so the block starts
+// zeroed to keep them defined.
+class ColumnScratch
+{
+public:
+  ColumnScratch() = default;
+  ~ColumnScratch() { fftw_free(this->Block); }
+  ColumnScratch(const ColumnScratch&) {}
+  ColumnScratch& operator=(const ColumnScratch&) { return *this; }
+
+  fftw_complex* Get(int lz)
+  {
+    if (!this->Block)
+    {
+      const std::size_t n = static_cast<std::size_t>(ColumnBlock) * lz;
+      this->Block = static_cast<fftw_complex*>(fftw_malloc(n * sizeof(fftw_complex)));
+      if (this->Block)
+      {
+        std::fill(&this->Block[0][0], &this->Block[0][0] + 2 * n, 0.0);
+      }
+    }
+    return this->Block;
+  }
+
+private:
+  fftw_complex* Block = nullptr;
+};
+
+// What the fill of one z slab found: the row sums (in the order the old
+// sequential pass added them, so that N is the same to the last bit), the
+// value range (equal ends: a constant volume) and the first invalid count.
+struct SlabCheck
+{
+  double Min = std::numeric_limits<double>::infinity();
+  double Max = -std::numeric_limits<double>::infinity();
+  bool Invalid = false;
+  int BadX = 0;
+  int BadY = 0;
+  double BadValue = 0.0;
+};
+
+// Fills one padded slab row from x-fastest values and checks them; returns
+// the row sum as the sequence of double additions in x order (for a mask the
+// partial sums are whole numbers, so an integer sum is the same number).
+template <typename T>
+double FillRow(const T* src, int lx, double* dst, int y, SlabCheck& check)
+{
+  if constexpr (std::is_integral<T>::value)
+  {
+    static_assert(std::is_unsigned<T>::value, "counts of an integral type are unsigned");
+    unsigned long long sum = 0;
+    T low = src[0];
+    T high = src[0];
+    for (int x = 0; x < lx; ++x)
+    {
+      const T v = src[x];
+      dst[x] = static_cast<double>(v);
+      sum += v;
+      low = std::min(low, v);
+      high = std::max(high, v);
+    }
+    check.Min = std::min(check.Min, static_cast<double>(low));
+    check.Max = std::max(check.Max, static_cast<double>(high));
+    return static_cast<double>(sum);
+  }
+  else
+  {
+    double sum = 0.0;
+    double low = check.Min;
+    double high = check.Max;
+    bool valid = true;
+    for (int x = 0; x < lx; ++x)
+    {
+      const double v = static_cast<double>(src[x]);
+      dst[x] = v;
+      sum += v;
+      low = std::min(low, v);
+      high = std::max(high, v);
+      valid &= (v >= 0.0) & (v <= std::numeric_limits<double>::max());
+    }
+    check.Min = low;
+    check.Max = high;
+    for (int x = 0; !valid && !check.Invalid && x < lx; ++x)
+    {
+      if (!(dst[x] >= 0.0 && dst[x] <= std::numeric_limits<double>::max()))
+      {
+        check.Invalid = true;
+        check.BadX = x;
+        check.BadY = y;
+        check.BadValue = dst[x];
+      }
+    }
+    return sum;
+  }
+}
+
+//------------------------------------------------------------------------------
 // Per-shell sums for one pass over the half spectrum. Counts are integers (a
 // sample off the kx = 0 and kx = Lx / 2 planes stands for itself and its
 // conjugate mirror, weight 2).
@@ -128,6 +309,18 @@ struct ShellSums
   long long Count = 0;
   double SegmentSum[3] = { 0.0, 0.0, 0.0 };
   long long SegmentCount[3] = { 0, 0, 0 };
+
+  void Add(const ShellSums& s)
+  {
+    this->Sum += s.Sum;
+    this->SumSquares += s.SumSquares;
+    this->Count += s.Count;
+    for (int k = 0; k < 3; ++k)
+    {
+      this->SegmentSum[k] += s.SegmentSum[k];
+      this->SegmentCount[k] += s.SegmentCount[k];
+    }
+  }
 };
 
 struct Accumulator
@@ -158,6 +351,61 @@ AxisTable MakeAxisTable(int length, int count, long long otherLengths)
   }
   return table;
 }
+
+// The frequency lattice of the half spectrum, as Compute() walks it.
+struct ShellGeometry
+{
+  int Lx = 0, Ly = 0, Lz = 0, Lmin = 0, HalfX = 0, MaxShell = 0;
+  AxisTable X, Y, Z;
+
+  explicit ShellGeometry(const int dims[3])
+    : Lx(dims[0])
+    , Ly(dims[1])
+    , Lz(dims[2])
+    , Lmin(std::min(dims[0], std::min(dims[1], dims[2])))
+    , HalfX(dims[0] / 2 + 1)
+    , X(MakeAxisTable(dims[0], dims[0] / 2 + 1, static_cast<long long>(dims[1]) * dims[2]))
+    , Y(MakeAxisTable(dims[1], dims[1], static_cast<long long>(dims[0]) * dims[2]))
+    , Z(MakeAxisTable(dims[2], dims[2], static_cast<long long>(dims[0]) * dims[1]))
+  {
+    // The corner frequency has the largest radius; rounding is monotonic, so no
+    // sample can land on a higher shell than the corner's.
+    this->MaxShell =
+      static_cast<int>(std::sqrt(this->Z.Frequency2[this->Lz / 2] +
+                         this->Y.Frequency2[this->Ly / 2] + this->X.Frequency2[this->Lx / 2]) *
+          this->Lmin +
+        0.5);
+  }
+};
+
+// Where the accumulated power is: with one realization, in place in the
+// transform buffer (the real part of each complex slot); from the second on,
+// in the dense PowerSum buffer.
+struct PowerView
+{
+  const double* Base = nullptr;
+  std::size_t SlabStride = 0; // doubles from one z to the next
+  std::size_t RowStride = 0;  // doubles from one y to the next
+  std::size_t Step = 1;       // doubles from one kx to the next
+
+  PowerView(const double* base, const std::size_t strides[3])
+    : Base(base)
+    , SlabStride(strides[0])
+    , RowStride(strides[1])
+    , Step(strides[2])
+  {
+  }
+
+  const double* Row(int y, int z) const
+  {
+    return this->Base + z * this->SlabStride + y * this->RowStride;
+  }
+};
+
+// The rows (y, z) of the half spectrum are summed in a fixed number of
+// contiguous chunks whose partial sums are added in chunk order, so the
+// result is the same whatever the number of threads.
+constexpr vtkIdType ShellChunks = 64;
 
 double PrincipalFrequency(double g)
 {
@@ -200,6 +448,139 @@ double Correlation(const std::vector<double>& a, const std::vector<double>& b)
   }
   return std::max(-1.0, std::min(1.0, sab / std::sqrt(saa * sbb)));
 }
+
+void SumShellRows(const ShellGeometry& g, const PowerView& power, double h2, vtkIdType beginRow,
+  vtkIdType endRow, Accumulator& acc)
+{
+  acc.Shells.assign(static_cast<std::size_t>(g.MaxShell) + 1, ShellSums());
+  ShellSums* shells = acc.Shells.data();
+  const bool evenX = (g.Lx % 2 == 0);
+  double total = 0.0;
+  double low = 0.0;
+  for (vtkIdType row = beginRow; row < endRow; ++row)
+  {
+    const int z = static_cast<int>(row / g.Ly);
+    const int y = static_cast<int>(row % g.Ly);
+    const double yz2 = g.Z.Frequency2[z] + g.Y.Frequency2[y];
+    const long long cy = g.Y.Component[y];
+    const long long cz = g.Z.Component[z];
+    const long long cyz = std::max(cy, cz);
+    const int rowSegment = (cy >= cz) ? SegmentXZ : SegmentXY;
+    const double* p = power.Row(y, z);
+    const std::size_t step = power.Step;
+    for (int x = (row == 0) ? 1 : 0; x < g.HalfX; ++x)
+    {
+      const double f2 = yz2 + g.X.Frequency2[x];
+      ShellSums& s = shells[static_cast<int>(std::sqrt(f2) * g.Lmin + 0.5)];
+      const int w = (x == 0 || (evenX && x == g.HalfX - 1)) ? 1 : 2;
+      const double v = p[x * step];
+      const double wv = w * v;
+      s.Sum += wv;
+      s.SumSquares += wv * v;
+      s.Count += w;
+      const int segment = (g.X.Component[x] >= cyz) ? SegmentYZ : rowSegment;
+      s.SegmentSum[segment] += wv;
+      s.SegmentCount[segment] += w;
+      total += wv;
+      if (f2 * f2 * f2 < h2)
+      {
+        low += wv;
+      }
+    }
+  }
+  acc.Total = total;
+  acc.Low = low;
+}
+
+Accumulator SumShells(const ShellGeometry& g, const PowerView& power, double h2)
+{
+  const vtkIdType rows = static_cast<vtkIdType>(g.Ly) * g.Lz;
+  const vtkIdType chunks = std::min(rows, ShellChunks);
+  std::vector<Accumulator> partial(static_cast<std::size_t>(chunks));
+  // At least 2^18 samples per task: below that, threads cost more than the pass.
+  const vtkIdType grain = std::max<vtkIdType>(1, ((vtkIdType(1) << 18) / g.HalfX) * chunks / rows);
+  vtkSMPTools::For(0, chunks, grain,
+    [&](vtkIdType c0, vtkIdType c1)
+    {
+      for (vtkIdType c = c0; c < c1; ++c)
+      {
+        SumShellRows(g, power, h2, rows * c / chunks, rows * (c + 1) / chunks, partial[c]);
+      }
+    });
+  Accumulator sum;
+  sum.Shells.resize(static_cast<std::size_t>(g.MaxShell) + 1);
+  for (const Accumulator& acc : partial)
+  {
+    for (int n = 0; n <= g.MaxShell; ++n)
+    {
+      sum.Shells[n].Add(acc.Shells[n]);
+    }
+    sum.Total += acc.Total;
+    sum.Low += acc.Low;
+  }
+  return sum;
+}
+
+void FillShells(const Accumulator& sum, const ShellGeometry& g, int realisations,
+  vtkBlueNoiseSpectrumKernel::Result& out)
+{
+  constexpr double floorDB = vtkBlueNoiseSpectrumKernel::AnisotropyFloorDB;
+  // The sums are over the summed power; dividing once here averages it.
+  const double invR = 1.0 / realisations;
+  const std::size_t nShells = static_cast<std::size_t>(g.MaxShell);
+  for (auto* column : { &out.Frequency, &out.RadialPower, &out.Anisotropy, &out.AnisotropyDB,
+         &out.SrapsXY, &out.SrapsXZ, &out.SrapsYZ })
+  {
+    column->resize(nShells);
+  }
+  out.ShellCount.resize(nShells);
+  for (int n = 1; n <= g.MaxShell; ++n)
+  {
+    const ShellSums& s = sum.Shells[n];
+    const std::size_t i = static_cast<std::size_t>(n - 1);
+    const double shellSum = s.Sum * invR;
+    const double mean = s.Count > 0 ? shellSum / s.Count : 0.0;
+    double anisotropy = 0.0;
+    if (s.Count >= 2 && mean > 0.0)
+    {
+      const double variance =
+        std::max(0.0, (s.SumSquares * invR * invR - shellSum * mean) / (s.Count - 1));
+      anisotropy = variance / (mean * mean);
+    }
+    out.Frequency[i] = static_cast<double>(n) / g.Lmin;
+    out.RadialPower[i] = mean;
+    out.Anisotropy[i] = anisotropy;
+    out.AnisotropyDB[i] =
+      anisotropy > 0.0 ? std::max(floorDB, 10.0 * std::log10(anisotropy)) : floorDB;
+    const auto segmentMean = [&](int k)
+    { return s.SegmentCount[k] > 0 ? s.SegmentSum[k] * invR / s.SegmentCount[k] : 0.0; };
+    out.SrapsXY[i] = segmentMean(SegmentXY);
+    out.SrapsXZ[i] = segmentMean(SegmentXZ);
+    out.SrapsYZ[i] = segmentMean(SegmentYZ);
+    out.ShellCount[i] = s.Count;
+  }
+}
+
+double SymmetryCorrelation(
+  const Accumulator& sum, const ShellGeometry& g, const vtkBlueNoiseSpectrumKernel::Result& out)
+{
+  std::vector<double> xy, xz, yz;
+  const int lastCorrelated = std::min(g.MaxShell, g.Lmin / 2);
+  for (int n = 1; n <= lastCorrelated; ++n)
+  {
+    // Up to Lmin / 2 every axis reaches every shell, so no segment is empty
+    // there on any grid; the test keeps empty segments out should that change.
+    const ShellSums& s = sum.Shells[n];
+    if (s.SegmentCount[0] > 0 && s.SegmentCount[1] > 0 && s.SegmentCount[2] > 0)
+    {
+      xy.push_back(out.SrapsXY[n - 1]);
+      xz.push_back(out.SrapsXZ[n - 1]);
+      yz.push_back(out.SrapsYZ[n - 1]);
+    }
+  }
+  return (Correlation(xy, xz) + Correlation(xy, yz) + Correlation(xz, yz)) / 3.0;
+}
+
 }
 
 //------------------------------------------------------------------------------
@@ -214,12 +595,11 @@ vtkBlueNoiseSpectrumKernel::~vtkBlueNoiseSpectrumKernel()
 //------------------------------------------------------------------------------
 void vtkBlueNoiseSpectrumKernel::ReleaseBuffers()
 {
-  fftw_free(this->Transform);
-  fftw_free(this->Columns);
-  fftw_free(this->PowerSum);
+  std::free(this->Transform);
+  std::free(this->PowerSum);
   this->Transform = nullptr;
-  this->Columns = nullptr;
   this->PowerSum = nullptr;
+  this->PowerInTransform = false;
   this->SlabPlan = nullptr;
   this->ColumnPlan = nullptr;
   this->SlabStride = 0;
@@ -253,24 +633,17 @@ bool vtkBlueNoiseSpectrumKernel::SetDimensions(int lx, int ly, int lz, std::stri
     SetError(error, "grid dimensions are too large to address");
     return false;
   }
-  const std::size_t half = static_cast<std::size_t>(ly) * lz * halfX;
-  this->Transform = static_cast<double*>(fftw_malloc(slabStride * lz * sizeof(double)));
-  this->Columns = static_cast<double*>(fftw_malloc(2 * ColumnBlock * sizeof(double) * lz));
-  this->PowerSum = static_cast<double*>(fftw_malloc(half * sizeof(double)));
-  if (!this->Transform || !this->Columns || !this->PowerSum)
+  this->Transform = AllocateLarge(slabStride * lz);
+  if (!this->Transform)
   {
-    this->ReleaseBuffers();
     std::ostringstream msg;
-    msg << "cannot allocate " << (slabStride * lz + half) * sizeof(double) << " bytes for a " << lx
-        << " x " << ly << " x " << lz << " spectrum";
+    msg << "cannot allocate " << slabStride * lz * sizeof(double) << " bytes for a " << lx << " x "
+        << ly << " x " << lz << " spectrum";
     SetError(error, msg.str());
     return false;
   }
-  // The last block of a pass transforms some stale lanes; keep them defined.
-  std::fill(this->Columns, this->Columns + 2 * ColumnBlock * static_cast<std::size_t>(lz), 0.0);
   const int dims[3] = { lx, ly, lz };
-  const TransformPlans plans = PlanCache::Instance().Get(
-    dims, this->Transform, reinterpret_cast<fftw_complex*>(this->Columns));
+  const TransformPlans plans = PlanCache::Instance().Get(dims, this->Transform);
   if (!plans.Slab)
   {
     this->ReleaseBuffers();
@@ -281,7 +654,7 @@ bool vtkBlueNoiseSpectrumKernel::SetDimensions(int lx, int ly, int lz, std::stri
   this->ColumnPlan = plans.Columns;
   this->SlabStride = slabStride;
   std::copy(dims, dims + 3, this->Dimensions);
-  this->HalfSize = half;
+  this->HalfSize = static_cast<std::size_t>(ly) * lz * halfX;
   return true;
 }
 
@@ -303,6 +676,7 @@ void vtkBlueNoiseSpectrumKernel::Reset()
   this->Realisations = 0;
   this->ConstantRealisations = 0;
   this->PointSum = 0.0;
+  this->PowerInTransform = false;
 }
 
 //------------------------------------------------------------------------------
@@ -339,42 +713,137 @@ bool vtkBlueNoiseSpectrumKernel::AddRealisationTemplate(const T* values, std::st
   }
   const int lx = this->Dimensions[0];
   const int ly = this->Dimensions[1];
+  return this->TransformRealisation(
+    [values, lx, ly](int z, double* slab, double* rowSums, SlabCheck& check)
+    {
+      const std::size_t padX = 2 * (static_cast<std::size_t>(lx) / 2 + 1);
+      for (int y = 0; y < ly; ++y)
+      {
+        const T* src = values + (static_cast<std::size_t>(z) * ly + y) * lx;
+        rowSums[y] = FillRow(src, lx, slab + y * padX, y, check);
+      }
+    },
+    error);
+}
+
+//------------------------------------------------------------------------------
+bool vtkBlueNoiseSpectrumKernel::AddSamples(
+  const long long* voxels, const float* weights, std::size_t count, std::string* error)
+{
+  if (!this->Transform)
+  {
+    SetError(error, "the grid dimensions are not set");
+    return false;
+  }
+  if (count > 0 && !voxels)
+  {
+    SetError(error, "no voxel indices given");
+    return false;
+  }
+  // The samples of each z slab, in the order given: a stable counting sort.
+  const int lx = this->Dimensions[0];
+  const int ly = this->Dimensions[1];
   const int lz = this->Dimensions[2];
-  const std::size_t padX = 2 * (static_cast<std::size_t>(lx) / 2 + 1);
-  const auto slabPlan = static_cast<fftw_plan>(this->SlabPlan);
-  const T first = values[0];
-  double n = 0.0;
-  bool constant = true;
-  // Each z slab is filled and transformed in x and y while it is in cache.
+  const long long slabSize = static_cast<long long>(lx) * ly;
+  std::vector<std::size_t> first(static_cast<std::size_t>(lz) + 1, 0);
+  for (std::size_t i = 0; i < count; ++i)
+  {
+    const float w = weights ? weights[i] : 1.0f;
+    if (voxels[i] < 0 || voxels[i] >= slabSize * lz || !(w >= 0.0f && std::isfinite(w)))
+    {
+      std::ostringstream msg;
+      msg << "sample " << i << " (voxel " << voxels[i] << ", weight " << w
+          << ") is outside the grid or has a weight that is negative or not finite";
+      SetError(error, msg.str());
+      return false;
+    }
+    ++first[static_cast<std::size_t>(voxels[i] / slabSize) + 1];
+  }
   for (int z = 0; z < lz; ++z)
   {
-    double* slab = this->Transform + z * this->SlabStride;
-    for (int y = 0; y < ly; ++y)
+    first[z + 1] += first[z];
+  }
+  std::vector<std::size_t> order(count);
+  std::vector<std::size_t> next(first.begin(), first.end() - 1);
+  for (std::size_t i = 0; i < count; ++i)
+  {
+    order[next[static_cast<std::size_t>(voxels[i] / slabSize)]++] = i;
+  }
+  // Samples on one voxel add up in single precision, in the order given: the
+  // values a float count volume filled in that order would hold.
+  return this->TransformRealisation(
+    [&](int z, double* slab, double* rowSums, SlabCheck& check)
     {
-      const T* src = values + (static_cast<std::size_t>(z) * ly + y) * lx;
-      double* dst = slab + y * padX;
-      double rowSum = 0.0;
-      bool rowConstant = true;
-      for (int x = 0; x < lx; ++x)
+      const std::size_t padX = 2 * (static_cast<std::size_t>(lx) / 2 + 1);
+      for (int y = 0; y < ly; ++y)
       {
-        const double v = static_cast<double>(src[x]);
-        if (std::is_floating_point<T>::value &&
-          !(v >= 0.0 && v <= std::numeric_limits<double>::max()))
-        {
-          std::ostringstream msg;
-          msg << "the count at voxel (" << x << ", " << y << ", " << z << ") is " << v
-              << ": counts must be finite and non-negative";
-          SetError(error, msg.str());
-          return false;
-        }
-        dst[x] = v;
-        rowSum += v;
-        rowConstant &= (src[x] == first);
+        std::fill(slab + y * padX, slab + y * padX + lx, 0.0);
       }
-      n += rowSum;
-      constant &= rowConstant;
+      for (std::size_t s = first[z]; s < first[z + 1]; ++s)
+      {
+        const std::size_t i = order[s];
+        const long long inSlab = voxels[i] - z * slabSize;
+        double& slot = slab[(inSlab / lx) * padX + inSlab % lx];
+        slot = static_cast<double>(static_cast<float>(slot) + (weights ? weights[i] : 1.0f));
+      }
+      for (int y = 0; y < ly; ++y)
+      {
+        rowSums[y] = FillRow(slab + y * padX, lx, slab + y * padX, y, check);
+      }
+    },
+    error);
+}
+
+//------------------------------------------------------------------------------
+template <typename FillSlab>
+bool vtkBlueNoiseSpectrumKernel::TransformRealisation(FillSlab fillSlab, std::string* error)
+{
+  // The first realization's power is in the transform buffer: move it aside
+  // before this one overwrites it (and so that a rejected one changes nothing).
+  if (this->PowerInTransform && !this->MovePowerAside(error))
+  {
+    return false;
+  }
+  const int lx = this->Dimensions[0];
+  const int ly = this->Dimensions[1];
+  const int lz = this->Dimensions[2];
+  const auto slabPlan = static_cast<fftw_plan>(this->SlabPlan);
+  std::vector<double> rowSums(static_cast<std::size_t>(ly) * lz);
+  std::vector<SlabCheck> checks(static_cast<std::size_t>(lz));
+  // Each z slab is filled and transformed in x and y while it is in cache.
+  vtkSMPTools::For(0, lz, SlabGrain(lx, ly),
+    [&](vtkIdType z0, vtkIdType z1)
+    {
+      for (vtkIdType z = z0; z < z1; ++z)
+      {
+        double* slab = this->Transform + z * this->SlabStride;
+        fillSlab(static_cast<int>(z), slab, rowSums.data() + z * ly, checks[z]);
+        if (!checks[z].Invalid)
+        {
+          fftw_execute_dft_r2c(slabPlan, slab, reinterpret_cast<fftw_complex*>(slab));
+        }
+      }
+    });
+  double n = 0.0;
+  for (double rowSum : rowSums)
+  {
+    n += rowSum;
+  }
+  double low = std::numeric_limits<double>::infinity();
+  double high = -low;
+  for (int z = 0; z < lz; ++z)
+  {
+    const SlabCheck& c = checks[z];
+    if (c.Invalid)
+    {
+      std::ostringstream msg;
+      msg << "the count at voxel (" << c.BadX << ", " << c.BadY << ", " << z << ") is "
+          << c.BadValue << ": counts must be finite and non-negative";
+      SetError(error, msg.str());
+      return false;
     }
-    fftw_execute_dft_r2c(slabPlan, slab, reinterpret_cast<fftw_complex*>(slab));
+    low = std::min(low, c.Min);
+    high = std::max(high, c.Max);
   }
   if (n <= 0.0)
   {
@@ -382,51 +851,146 @@ bool vtkBlueNoiseSpectrumKernel::AddRealisationTemplate(const T* values, std::st
       error, "the realisation has no points (N = 0): the spectrum P = |B|^2 / N is undefined");
     return false;
   }
-
-  const bool firstRealisation = (this->Realisations == 0);
-  if (constant)
+  if (low == high)
   {
     // A constant volume has no power off DC: the transform would only add
     // rounding noise, so its contribution is exactly zero.
-    if (firstRealisation)
+    if (this->Realisations == 0)
     {
-      std::fill(this->PowerSum, this->PowerSum + this->HalfSize, 0.0);
+      this->ZeroPower();
     }
     ++this->ConstantRealisations;
   }
   else
   {
-    // z transforms over blocks of ColumnBlock (kx, ky) columns gathered from
-    // the slabs; the power goes straight from the block to the sum.
-    const auto columnPlan = static_cast<fftw_plan>(this->ColumnPlan);
-    auto* block = reinterpret_cast<fftw_complex*>(this->Columns);
-    const std::size_t columns = this->HalfSize / lz;
-    const double invN = 1.0 / n;
-    for (std::size_t c0 = 0; c0 < columns; c0 += ColumnBlock)
-    {
-      const std::size_t width = std::min<std::size_t>(ColumnBlock, columns - c0);
-      for (int z = 0; z < lz; ++z)
-      {
-        const auto* slab =
-          reinterpret_cast<const fftw_complex*>(this->Transform + z * this->SlabStride);
-        std::memcpy(block + z * ColumnBlock, slab + c0, width * sizeof(fftw_complex));
-      }
-      fftw_execute_dft(columnPlan, block, block);
-      for (int z = 0; z < lz; ++z)
-      {
-        const fftw_complex* b = block + z * ColumnBlock;
-        double* power = this->PowerSum + z * columns + c0;
-        for (std::size_t i = 0; i < width; ++i)
-        {
-          const double p = (b[i][0] * b[i][0] + b[i][1] * b[i][1]) * invN;
-          power[i] = firstRealisation ? p : power[i] + p;
-        }
-      }
-    }
+    this->TransformColumns(1.0 / n);
   }
+  this->PowerInTransform = (this->Realisations == 0);
   ++this->Realisations;
   this->PointSum += n;
   return true;
+}
+
+//------------------------------------------------------------------------------
+void vtkBlueNoiseSpectrumKernel::TransformColumns(double invN)
+{
+  // z transforms over blocks of ColumnBlock (kx, ky) columns gathered from the
+  // slabs; the power goes straight from the block to where it is kept.
+  const int lz = this->Dimensions[2];
+  const auto columnPlan = static_cast<fftw_plan>(this->ColumnPlan);
+  const std::size_t columns = this->HalfSize / lz;
+  const vtkIdType blocks = static_cast<vtkIdType>((columns + ColumnBlock - 1) / ColumnBlock);
+  const bool first = (this->Realisations == 0);
+  vtkSMPThreadLocal<ColumnScratch> scratch;
+  const vtkIdType grain = std::max<vtkIdType>(1, ValuesPerTask / (ColumnBlock * lz));
+  vtkSMPTools::For(0, blocks, grain,
+    [&](vtkIdType b0, vtkIdType b1)
+    {
+      fftw_complex* block = scratch.Local().Get(lz);
+      for (vtkIdType b = b0; b < b1; ++b)
+      {
+        const std::size_t c0 = static_cast<std::size_t>(b) * ColumnBlock;
+        const std::size_t width = std::min<std::size_t>(ColumnBlock, columns - c0);
+        for (int z = 0; z < lz; ++z)
+        {
+          const auto* slab =
+            reinterpret_cast<const fftw_complex*>(this->Transform + z * this->SlabStride);
+          std::memcpy(block + z * ColumnBlock, slab + c0, width * sizeof(fftw_complex));
+        }
+        fftw_execute_dft(columnPlan, block, block);
+        for (int z = 0; z < lz; ++z)
+        {
+          const fftw_complex* v = block + z * ColumnBlock;
+          if (first)
+          {
+            // The real part of each slot of this block: its columns are read.
+            double* power = this->Transform + z * this->SlabStride + 2 * c0;
+            for (std::size_t i = 0; i < width; ++i)
+            {
+              power[2 * i] = (v[i][0] * v[i][0] + v[i][1] * v[i][1]) * invN;
+            }
+          }
+          else
+          {
+            double* power = this->PowerSum + z * columns + c0;
+            for (std::size_t i = 0; i < width; ++i)
+            {
+              power[i] += (v[i][0] * v[i][0] + v[i][1] * v[i][1]) * invN;
+            }
+          }
+        }
+      }
+    });
+}
+
+//------------------------------------------------------------------------------
+void vtkBlueNoiseSpectrumKernel::ZeroPower()
+{
+  const int lx = this->Dimensions[0];
+  const int ly = this->Dimensions[1];
+  vtkSMPTools::For(0, this->Dimensions[2], SlabGrain(lx, ly),
+    [&](vtkIdType z0, vtkIdType z1)
+    {
+      std::fill(
+        this->Transform + z0 * this->SlabStride, this->Transform + z1 * this->SlabStride, 0.0);
+    });
+}
+
+//------------------------------------------------------------------------------
+bool vtkBlueNoiseSpectrumKernel::MovePowerAside(std::string* error)
+{
+  if (!this->PowerSum)
+  {
+    this->PowerSum = AllocateLarge(this->HalfSize);
+    if (!this->PowerSum)
+    {
+      std::ostringstream msg;
+      msg << "cannot allocate " << this->HalfSize * sizeof(double)
+          << " bytes to average realisations";
+      SetError(error, msg.str());
+      return false;
+    }
+  }
+  const int lx = this->Dimensions[0];
+  const int ly = this->Dimensions[1];
+  const std::size_t halfX = static_cast<std::size_t>(lx) / 2 + 1;
+  std::size_t strides[3];
+  const PowerView from(this->PowerLayout(strides), strides);
+  vtkSMPTools::For(0, this->Dimensions[2], SlabGrain(lx, ly),
+    [&](vtkIdType z0, vtkIdType z1)
+    {
+      for (vtkIdType z = z0; z < z1; ++z)
+      {
+        for (int y = 0; y < ly; ++y)
+        {
+          const double* src = from.Row(y, static_cast<int>(z));
+          double* dst = this->PowerSum + (static_cast<std::size_t>(z) * ly + y) * halfX;
+          for (std::size_t x = 0; x < halfX; ++x)
+          {
+            dst[x] = src[2 * x];
+          }
+        }
+      }
+    });
+  this->PowerInTransform = false;
+  return true;
+}
+
+//------------------------------------------------------------------------------
+const double* vtkBlueNoiseSpectrumKernel::PowerLayout(std::size_t strides[3]) const
+{
+  const std::size_t halfX = static_cast<std::size_t>(this->Dimensions[0]) / 2 + 1;
+  if (this->PowerInTransform)
+  {
+    strides[0] = this->SlabStride;
+    strides[1] = 2 * halfX;
+    strides[2] = 2;
+    return this->Transform;
+  }
+  strides[0] = static_cast<std::size_t>(this->Dimensions[1]) * halfX;
+  strides[1] = halfX;
+  strides[2] = 1;
+  return this->PowerSum;
 }
 
 //------------------------------------------------------------------------------
@@ -437,166 +1001,25 @@ bool vtkBlueNoiseSpectrumKernel::Compute(Result& out, std::string* error) const
     SetError(error, "no realisation has been added");
     return false;
   }
-  const int lx = this->Dimensions[0];
-  const int ly = this->Dimensions[1];
-  const int lz = this->Dimensions[2];
-  const int lmin = std::min(lx, std::min(ly, lz));
-  const int halfX = lx / 2 + 1;
-  const double voxels = static_cast<double>(lx) * ly * lz;
-
-  const AxisTable ax = MakeAxisTable(lx, halfX, static_cast<long long>(ly) * lz);
-  const AxisTable ay = MakeAxisTable(ly, ly, static_cast<long long>(lx) * lz);
-  const AxisTable az = MakeAxisTable(lz, lz, static_cast<long long>(lx) * ly);
-  // The corner frequency has the largest radius; rounding is monotonic, so no
-  // sample can land on a higher shell than the corner's.
-  const int maxShell = static_cast<int>(
-    std::sqrt(az.Frequency2[lz / 2] + ay.Frequency2[ly / 2] + ax.Frequency2[lx / 2]) * lmin + 0.5);
-
+  const ShellGeometry geometry(this->Dimensions);
+  const double voxels =
+    static_cast<double>(geometry.Lx) * static_cast<double>(geometry.Ly) * geometry.Lz;
   const double meanPoints = this->PointSum / this->Realisations;
   const double density = meanPoints / voxels;
-  const double fg = PrincipalFrequency(density);
   // |f| < f_g = cbrt(h) is tested as |f|^6 < h^2: cbrt is not correctly
   // rounded (cbrt(2^-9) < 1/8 in glibc), the cubes are exact on dyadic grids.
   const double h = density <= 0.5 ? density : std::max(0.0, 1.0 - density);
-  const double h2 = h * h;
+  std::size_t strides[3];
+  const PowerView power(this->PowerLayout(strides), strides);
+  const Accumulator sum = SumShells(geometry, power, h * h);
 
-  vtkSMPThreadLocal<Accumulator> locals;
-  const double* power = this->PowerSum;
-  const bool evenX = (lx % 2 == 0);
-  // At least 2^18 samples per task: below that, threads cost more than the pass.
-  const vtkIdType rows = static_cast<vtkIdType>(ly) * lz;
-  const vtkIdType grain = std::max<vtkIdType>(1, (vtkIdType(1) << 18) / halfX);
-  vtkSMPTools::For(0, rows, grain, [&](vtkIdType beginRow, vtkIdType endRow) {
-    Accumulator& acc = locals.Local();
-    if (acc.Shells.empty())
-    {
-      acc.Shells.resize(maxShell + 1);
-    }
-    ShellSums* shells = acc.Shells.data();
-    double total = 0.0;
-    double low = 0.0;
-    for (vtkIdType row = beginRow; row < endRow; ++row)
-    {
-      const int z = static_cast<int>(row / ly);
-      const int y = static_cast<int>(row % ly);
-      const double yz2 = az.Frequency2[z] + ay.Frequency2[y];
-      const long long cy = ay.Component[y];
-      const long long cz = az.Component[z];
-      const long long cyz = std::max(cy, cz);
-      const int rowSegment = (cy >= cz) ? SegmentXZ : SegmentXY;
-      const double* p = power + row * halfX;
-      for (int x = (row == 0) ? 1 : 0; x < halfX; ++x)
-      {
-        const double f2 = yz2 + ax.Frequency2[x];
-        ShellSums& s = shells[static_cast<int>(std::sqrt(f2) * lmin + 0.5)];
-        const int w = (x == 0 || (evenX && x == halfX - 1)) ? 1 : 2;
-        const double v = p[x];
-        const double wv = w * v;
-        s.Sum += wv;
-        s.SumSquares += wv * v;
-        s.Count += w;
-        const int segment = (ax.Component[x] >= cyz) ? SegmentYZ : rowSegment;
-        s.SegmentSum[segment] += wv;
-        s.SegmentCount[segment] += w;
-        total += wv;
-        if (f2 * f2 * f2 < h2)
-        {
-          low += wv;
-        }
-      }
-    }
-    acc.Total += total;
-    acc.Low += low;
-  });
-
-  Accumulator sum;
-  sum.Shells.resize(maxShell + 1);
-  for (const Accumulator& acc : locals)
-  {
-    if (acc.Shells.empty())
-    {
-      continue;
-    }
-    for (int n = 0; n <= maxShell; ++n)
-    {
-      ShellSums& d = sum.Shells[n];
-      const ShellSums& s = acc.Shells[n];
-      d.Sum += s.Sum;
-      d.SumSquares += s.SumSquares;
-      d.Count += s.Count;
-      for (int k = 0; k < 3; ++k)
-      {
-        d.SegmentSum[k] += s.SegmentSum[k];
-        d.SegmentCount[k] += s.SegmentCount[k];
-      }
-    }
-    sum.Total += acc.Total;
-    sum.Low += acc.Low;
-  }
-
-  // The sums are over the summed power; dividing once here averages it.
-  const double invR = 1.0 / this->Realisations;
-  const std::size_t nShells = static_cast<std::size_t>(maxShell);
-  out.Frequency.resize(nShells);
-  out.RadialPower.resize(nShells);
-  out.Anisotropy.resize(nShells);
-  out.AnisotropyDB.resize(nShells);
-  out.SrapsXY.resize(nShells);
-  out.SrapsXZ.resize(nShells);
-  out.SrapsYZ.resize(nShells);
-  out.ShellCount.resize(nShells);
-  for (int n = 1; n <= maxShell; ++n)
-  {
-    const ShellSums& s = sum.Shells[n];
-    const std::size_t i = static_cast<std::size_t>(n - 1);
-    const double shellSum = s.Sum * invR;
-    const double mean = s.Count > 0 ? shellSum / s.Count : 0.0;
-    double anisotropy = 0.0;
-    if (s.Count >= 2 && mean > 0.0)
-    {
-      const double variance =
-        std::max(0.0, (s.SumSquares * invR * invR - shellSum * mean) / (s.Count - 1));
-      anisotropy = variance / (mean * mean);
-    }
-    out.Frequency[i] = static_cast<double>(n) / lmin;
-    out.RadialPower[i] = mean;
-    out.Anisotropy[i] = anisotropy;
-    out.AnisotropyDB[i] = anisotropy > 0.0
-      ? std::max(AnisotropyFloorDB, 10.0 * std::log10(anisotropy))
-      : AnisotropyFloorDB;
-    const auto segmentMean = [&](int k) {
-      return s.SegmentCount[k] > 0 ? s.SegmentSum[k] * invR / s.SegmentCount[k] : 0.0;
-    };
-    out.SrapsXY[i] = segmentMean(SegmentXY);
-    out.SrapsXZ[i] = segmentMean(SegmentXZ);
-    out.SrapsYZ[i] = segmentMean(SegmentYZ);
-    out.ShellCount[i] = s.Count;
-  }
-
-  std::vector<double> xy, xz, yz;
-  const int lastCorrelated = std::min(maxShell, lmin / 2);
-  for (int n = 1; n <= lastCorrelated; ++n)
-  {
-    // Up to Lmin / 2 every axis reaches every shell, so no segment is empty
-    // there on any grid; the test keeps empty segments out should that change.
-    const ShellSums& s = sum.Shells[n];
-    if (s.SegmentCount[0] > 0 && s.SegmentCount[1] > 0 && s.SegmentCount[2] > 0)
-    {
-      xy.push_back(out.SrapsXY[n - 1]);
-      xz.push_back(out.SrapsXZ[n - 1]);
-      yz.push_back(out.SrapsYZ[n - 1]);
-    }
-  }
-  const double correlation =
-    (Correlation(xy, xz) + Correlation(xy, yz) + Correlation(xz, yz)) / 3.0;
-
-  out.Dimensions[0] = lx;
-  out.Dimensions[1] = ly;
-  out.Dimensions[2] = lz;
+  FillShells(sum, geometry, this->Realisations, out);
+  const double correlation = SymmetryCorrelation(sum, geometry, out);
+  std::copy(this->Dimensions, this->Dimensions + 3, out.Dimensions);
   out.Realisations = this->Realisations;
   out.NumberOfPoints = meanPoints;
   out.Density = density;
-  out.PrincipalFrequency = fg;
+  out.PrincipalFrequency = PrincipalFrequency(density);
   out.LowFrequencyRatio = sum.Total > 0.0 ? sum.Low / sum.Total : 0.0;
   out.SymmetryCorrelation = correlation;
   out.Symmetry = 1.0 - correlation;
@@ -634,29 +1057,53 @@ bool vtkBlueNoiseSpectrumKernel::GetCentredPowerSpectrum(double* out) const
   const int lx = this->Dimensions[0];
   const int ly = this->Dimensions[1];
   const int lz = this->Dimensions[2];
-  const std::size_t halfX = static_cast<std::size_t>(lx) / 2 + 1;
   const double invR = 1.0 / this->Realisations;
-  double* dst = out;
-  for (int k = 0; k < lz; ++k)
-  {
-    const int kz = (k - lz / 2 + lz) % lz;
-    for (int j = 0; j < ly; ++j)
+  std::size_t strides[3];
+  const PowerView power(this->PowerLayout(strides), strides);
+  const std::size_t step = power.Step;
+  vtkSMPTools::For(0, lz, SlabGrain(lx, ly),
+    [&](vtkIdType k0, vtkIdType k1)
     {
-      const int ky = (j - ly / 2 + ly) % ly;
-      // Frequencies with kx > Lx / 2 are the conjugate mirrors of stored ones.
-      const double* direct = this->PowerSum + (static_cast<std::size_t>(kz) * ly + ky) * halfX;
-      const double* mirror =
-        this->PowerSum + (static_cast<std::size_t>((lz - kz) % lz) * ly + (ly - ky) % ly) * halfX;
-      for (int i = 0; i < lx; ++i)
+      double* dst = out + static_cast<std::size_t>(k0) * ly * lx;
+      for (vtkIdType k = k0; k < k1; ++k)
       {
-        const int kx = (i - lx / 2 + lx) % lx;
-        const double v = (kx <= lx / 2) ? direct[kx] : mirror[lx - kx];
-        *dst++ = v * invR;
+        const int kz = static_cast<int>((k - lz / 2 + lz) % lz);
+        for (int j = 0; j < ly; ++j)
+        {
+          const int ky = (j - ly / 2 + ly) % ly;
+          // Frequencies with kx > Lx / 2 are the conjugate mirrors of stored
+          // ones. Index i holds kx = i - floor(Lx / 2), folded into [0, Lx).
+          const double* direct = power.Row(ky, kz);
+          const double* mirror = power.Row((ly - ky) % ly, (lz - kz) % lz);
+          for (int kx = lx - lx / 2; kx < lx; ++kx)
+          {
+            *dst++ = (kx <= lx / 2 ? direct[kx * step] : mirror[(lx - kx) * step]) * invR;
+          }
+          for (int kx = 0; kx < lx - lx / 2; ++kx)
+          {
+            *dst++ = direct[kx * step] * invR;
+          }
+        }
       }
-    }
-  }
+    });
   out[(static_cast<std::size_t>(lz / 2) * ly + ly / 2) * lx + lx / 2] = 0.0;
   return true;
+}
+
+//------------------------------------------------------------------------------
+double* vtkBlueNoiseSpectrumKernel::NewCentredPowerSpectrum() const
+{
+  if (this->Realisations == 0)
+  {
+    return nullptr;
+  }
+  double* out = AllocateLarge(
+    static_cast<std::size_t>(this->Dimensions[0]) * this->Dimensions[1] * this->Dimensions[2]);
+  if (out)
+  {
+    this->GetCentredPowerSpectrum(out);
+  }
+  return out;
 }
 
 //------------------------------------------------------------------------------

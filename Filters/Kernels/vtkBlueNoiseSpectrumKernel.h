@@ -5,7 +5,7 @@
  * @brief   The 3D blue-noise spectrum metric of the paper (section 4, Eq. 2-11).
  *
  * Plain C++ (not a vtkObject, not wrapped) so that the sampler tests and the
- * parameter optimiser can call it many thousand times without a pipeline.
+ * parameter optimizer can call it many thousand times without a pipeline.
  * vtkBlueNoiseSpectrum is the VTK filter around it.
  *
  * Definitions (every quantity below is what Compute() reports):
@@ -53,23 +53,42 @@
  *   (1e-12 * largest |value|)^2 per shell, i.e. zero up to rounding) is 0.
  *   Symmetry S = 1 - C.
  * - Target (Eq. 5): TargetValue T = w L + (1 - w) S, w = Weight (default 0.02).
- * - Realisations. Several volumes on the same grid are averaged: P(f) is the
- *   mean of the realisations' own P(f) (each normalised by its own N); the
+ * - Realizations. Several volumes on the same grid are averaged: P(f) is the
+ *   mean of the realizations' own P(f) (each normalized by its own N); the
  *   shell statistics are computed on that mean; NumberOfPoints is the mean N
  *   and Density = mean N / V.
  *
- * Edge cases: a realisation with N = 0 is rejected with an error. When every
- * voxel of every realisation holds the same count (g = 1 for a mask) there is
+ * Edge cases: a realization with N = 0 is rejected with an error. When every
+ * voxel of every realization holds the same count (g = 1 for a mask) there is
  * no power off DC: Compute() succeeds with Result::Warning set, L = 0, all
  * anisotropies 0, C = 0 and S = 1. No reported value is ever NaN.
  *
- * Cost: per realisation, a real-to-complex FFT done as in-cache 2D transforms
+ * Cost: per realization, a real-to-complex FFT done as in-cache 2D transforms
  * of the z slabs followed by z transforms over small blocks of columns (FFTW,
- * plans cached per grid shape for the whole process; about 0.16 s for 256^3 on
- * one core), then per Compute() one pass over the half spectrum. Memory is one
- * complex half spectrum (the transform buffer) and one real half spectrum (the
- * accumulated power), about 12 * V bytes. A kernel keeps its buffers across
- * Reset() and SetDimensions() with an unchanged shape.
+ * plans cached per grid shape for the whole process), then per Compute() one
+ * pass over the half spectrum. Slabs, column blocks and the rows of that pass
+ * are spread over vtkSMPTools threads (as many as
+ * vtkSMPTools::GetEstimatedNumberOfThreads(), e.g. VTK_SMP_MAX_THREADS with
+ * the STDThread backend), each running the same single-threaded FFTW plans,
+ * and the shell statistics are summed in fixed chunks added in a fixed order:
+ * every reported value is the same, to the last bit, whatever the number of
+ * threads. Measured on the 2-core development VM for one 512^3 mask at
+ * g = 0.05, AddRealisation + Compute with the buffers already committed: about
+ * 1.0 s on one thread, 0.53 s on two (BenchmarkSpectrum, Reused); committing
+ * the 1.08 GB of a new kernel took 0.1 s to 2.4 s more on a quiet machine,
+ * depending on the huge pages the system had at hand.
+ *
+ * Memory: the transform buffer, Lz * Ly * 2 (Lx / 2 + 1) doubles (about 8
+ * bytes per voxel), which also holds the power of a single realization; from
+ * the second realization on, a dense half-spectrum sum of Lz * Ly * (Lx / 2 + 1)
+ * doubles (about 4 bytes per voxel) more. 512^3: 1.08 GB for one realization
+ * (1.21 GB peak resident for a process holding the kernel and the 134 MB
+ * mask), 1.62 GB for several. Buffers of 16 MiB and more are committed in bulk
+ * when allocated (on Linux: transparent huge pages where offered, and
+ * MADV_POPULATE_WRITE), as faulting them in page by page costs more than the
+ * transform on virtual machines. A kernel keeps its buffers across Reset() and
+ * SetDimensions() with an unchanged shape; AddSamples() needs 8 bytes per
+ * sample besides.
  *
  * Thread safety: distinct kernels may be used from different threads at the
  * same time (plan creation is serialised internally); one kernel must not be
@@ -105,7 +124,7 @@ public:
     std::vector<long long> ShellCount;
     int Dimensions[3] = { 0, 0, 0 };
     int Realisations = 0;
-    double NumberOfPoints = 0.0;      ///< mean N over the realisations
+    double NumberOfPoints = 0.0;      ///< mean N over the realizations
     double Density = 0.0;             ///< g
     double PrincipalFrequency = 0.0;  ///< f_g, Eq. 6
     double LowFrequencyRatio = 0.0;   ///< L(g), Eq. 7
@@ -122,7 +141,7 @@ public:
 
   /**
    * Set the grid shape (each dimension at least 2) and clear the accumulated
-   * realisations. Buffers are kept when the shape does not change. Returns
+   * realizations. Buffers are kept when the shape does not change. Returns
    * false, with the reason in `error`, for a bad shape; the kernel then has no
    * shape until the next successful call.
    */
@@ -133,12 +152,12 @@ public:
   void SetWeight(double w);
   double GetWeight() const { return this->Weight; }
 
-  /// Forget the accumulated realisations; keep the shape and the buffers.
+  /// Forget the accumulated realizations; keep the shape and the buffers.
   void Reset();
   int GetNumberOfRealisations() const { return this->Realisations; }
 
   /**
-   * Add one realisation of Lx * Ly * Lz counts, x fastest (a 0/1 mask has one
+   * Add one realization of Lx * Ly * Lz counts, x fastest (a 0/1 mask has one
    * point per set voxel; any value is a count). Returns false and leaves the accumulated state
    * unchanged when no shape is set, N = 0, or a count is negative or not finite.
    */
@@ -146,21 +165,41 @@ public:
   bool AddRealisation(const float* counts, std::string* error = nullptr);
   bool AddRealisation(const double* counts, std::string* error = nullptr);
 
-  /// Evaluate the metric on the realisations added so far (false if none).
+  /**
+   * Add one realization given as `count` samples: the voxel index of each
+   * (x fastest, as above) and its weight (`weights` null: 1 each). Samples on
+   * one voxel add up in single precision in the order given, so the result is
+   * that of AddRealisation(const float*) on a count volume filled in that
+   * order, without the volume. Returns false and leaves the accumulated state
+   * unchanged for an index outside the grid, a negative or non-finite weight
+   * or N = 0.
+   */
+  bool AddSamples(
+    const long long* voxels, const float* weights, std::size_t count, std::string* error = nullptr);
+
+  /// Evaluate the metric on the realizations added so far (false if none).
   bool Compute(Result& out, std::string* error = nullptr) const;
 
   /**
    * The averaged power spectrum over the full grid with the zero frequency
-   * centred: x fastest, Lx * Ly * Lz values, index i on an axis of length L is
+   * centered: x fastest, Lx * Ly * Lz values, index i on an axis of length L is
    * the frequency (i - floor(L / 2)) / L; the DC value is 0. Returns false (and
-   * empties `out`) when no realisation has been added.
+   * empties `out`) when no realization has been added.
    */
   bool GetCentredPowerSpectrum(std::vector<double>& out) const;
   /// The same into caller-owned memory of Lx * Ly * Lz values (untouched on false).
   bool GetCentredPowerSpectrum(double* out) const;
 
   /**
-   * One-call evaluation of a single mask for the optimiser. Reuses one kernel
+   * The same in new memory, committed in bulk like the kernel's own buffers
+   * (a gigabyte at 512^3); release it with free() (vtkAbstractArray's
+   * VTK_DATA_ARRAY_FREE). Null when no realization has been added or the
+   * memory cannot be allocated.
+   */
+  double* NewCentredPowerSpectrum() const;
+
+  /**
+   * One-call evaluation of a single mask for the optimizer. Reuses one kernel
    * per calling thread, so repeated calls with the same shape allocate nothing;
    * that kernel's buffers live until the thread ends.
    */
@@ -170,22 +209,33 @@ public:
 private:
   template <typename T>
   bool AddRealisationTemplate(const T* values, std::string* error);
+  // Fills every z slab with fillSlab(z, slab, rowSums, check), checks the counts
+  // and transforms them; the power goes where PowerLayout() says.
+  template <typename FillSlab>
+  bool TransformRealisation(FillSlab fillSlab, std::string* error);
+  void TransformColumns(double invN);
+  void ZeroPower();
+  bool MovePowerAside(std::string* error);
+  // The accumulated power: its start, and the strides in doubles from one z,
+  // one y and one kx to the next.
+  const double* PowerLayout(std::size_t strides[3]) const;
   void ReleaseBuffers();
 
   int Dimensions[3] = { 0, 0, 0 };
   double Weight = DefaultWeight;
   int Realisations = 0;
-  int ConstantRealisations = 0; // realisations with no power off DC
-  double PointSum = 0.0;        // sum of N over the realisations
+  int ConstantRealisations = 0; // realizations with no power off DC
+  double PointSum = 0.0;        // sum of N over the realizations
   std::size_t HalfSize = 0;     // Lz * Ly * (Lx / 2 + 1)
   std::size_t SlabStride = 0;   // doubles from one z slab of Transform to the next
   // Transform: per z slab, the real input with rows padded to 2 * (Lx / 2 + 1)
-  // doubles, transformed in place in x and y. Columns: a few z columns being
-  // transformed in z. Both fftw_malloc'ed, so aligned like the buffers the
-  // cached plans were made with.
+  // doubles, transformed in place in x and y, then in z by column blocks; with
+  // one realization (PowerInTransform), the power in the real part of each
+  // complex slot. PowerSum: the sum over realizations of |B|^2 / N, half
+  // spectrum, from the second realization on.
   double* Transform = nullptr;
-  double* Columns = nullptr;
-  double* PowerSum = nullptr; // sum over realisations of |B|^2 / N, half spectrum
+  double* PowerSum = nullptr;
+  bool PowerInTransform = false;
   void* SlabPlan = nullptr;   // fftw_plan, owned by the process-wide cache
   void* ColumnPlan = nullptr; // fftw_plan, owned by the process-wide cache
 };

@@ -2,6 +2,7 @@
 // SPDX-License-Identifier: BSD-3-Clause
 #include "vtkBlueNoiseSpectrum.h"
 
+#include "vtkBlueNoiseSpectrumGrid.h"
 #include "vtkBlueNoiseSpectrumKernel.h"
 #include "vtkCellData.h"
 #include "vtkCompositeDataIterator.h"
@@ -16,12 +17,12 @@
 #include "vtkInformation.h"
 #include "vtkInformationVector.h"
 #include "vtkIntArray.h"
-#include "vtkMath.h"
 #include "vtkNew.h"
 #include "vtkObjectFactory.h"
 #include "vtkPointData.h"
 #include "vtkPointSet.h"
 #include "vtkPoints.h"
+#include "vtkSMPTools.h"
 #include "vtkSmartPointer.h"
 #include "vtkStreamingDemandDrivenPipeline.h"
 #include "vtkTable.h"
@@ -32,162 +33,58 @@
 #include <cmath>
 #include <sstream>
 #include <string>
+#include <utility>
 #include <vector>
 
 vtkStandardNewMacro(vtkBlueNoiseSpectrum);
 
 namespace
 {
-// The grid points (voxel centres) a realisation is binned to:
-// x = Origin + D ((Lower + local ijk) * Spacing).
-struct AnalysisGrid
-{
-  int Dimensions[3] = { 0, 0, 0 };
-  int Lower[3] = { 0, 0, 0 };
-  double Origin[3] = { 0.0, 0.0, 0.0 };
-  double Spacing[3] = { 1.0, 1.0, 1.0 };
-  double Inverse[3][3] = { { 1, 0, 0 }, { 0, 1, 0 }, { 0, 0, 1 } }; // D^-1
-
-  std::size_t Size() const
-  {
-    return static_cast<std::size_t>(this->Dimensions[0]) * this->Dimensions[1] *
-      this->Dimensions[2];
-  }
-
-  // Index (x fastest) of the grid point nearest to p, or -1 outside the grid.
-  long long Locate(const double p[3]) const
-  {
-    const double d[3] = { p[0] - this->Origin[0], p[1] - this->Origin[1], p[2] - this->Origin[2] };
-    long long index = 0;
-    long long stride = 1;
-    for (int a = 0; a < 3; ++a)
-    {
-      const double c =
-        (this->Inverse[a][0] * d[0] + this->Inverse[a][1] * d[1] + this->Inverse[a][2] * d[2]) /
-          this->Spacing[a] -
-        this->Lower[a];
-      const double r = std::floor(c + 0.5);
-      if (!(r >= 0.0 && r < this->Dimensions[a]))
-      {
-        return -1;
-      }
-      index += static_cast<long long>(r) * stride;
-      stride *= this->Dimensions[a];
-    }
-    return index;
-  }
-};
+using Description = vtkBlueNoiseSpectrumGrid::Description;
 
 enum class SignalKind
 {
   ImageArray,    // an image's own grid, the array values are the counts
   Points,        // points binned to a grid
-  WeightedPoints // an image's point or cell centres, weighted by the array, binned
+  WeightedPoints // an image's point or cell centers, weighted by the array, binned
 };
 
-struct Realisation
+// One realization's samples on this process: voxel indices of the analysis
+// grid and their values (empty: one point each), and the counters of the
+// "outside the grid" warning.
+struct Samples
 {
-  vtkDataSet* Data = nullptr;
-  SignalKind Kind = SignalKind::Points;
-  vtkDataArray* Array = nullptr;
-  bool CellArray = false;
-  bool GridFromBounds = false; // rule 3: the grid is built over the bounds
-  AnalysisGrid Grid;
+  std::vector<long long> Voxels;
+  std::vector<double> Values;
+  long long Counters[2] = { 0, 0 }; // outside the grid, binned
 };
 
-// A field-data array read as `count` doubles. False when it is absent, and
-// also when it is malformed, which then sets `error`.
-bool ReadFieldValues(
-  vtkFieldData* fd, const char* name, int count, double* values, std::string& error)
+// The non-empty leaves of one input connection with their flat indices (0 for
+// a data set that is not composite).
+std::vector<std::pair<int, vtkDataObject*>> Leaves(vtkDataObject* input)
 {
-  vtkDataArray* array = fd ? fd->GetArray(name) : nullptr;
-  if (!array)
+  std::vector<std::pair<int, vtkDataObject*>> leaves;
+  if (auto composite = vtkCompositeDataSet::SafeDownCast(input))
   {
-    return false;
-  }
-  const vtkIdType n = array->GetNumberOfTuples() * array->GetNumberOfComponents();
-  if (n != count)
-  {
-    std::ostringstream msg;
-    msg << "field-data array " << name << " has " << n << " values, expected " << count;
-    error = msg.str();
-    return false;
-  }
-  const int nc = array->GetNumberOfComponents();
-  for (int i = 0; i < count; ++i)
-  {
-    values[i] = array->GetComponent(i / nc, i % nc);
-    if (!std::isfinite(values[i]))
+    vtkSmartPointer<vtkCompositeDataIterator> it;
+    it.TakeReference(composite->NewIterator());
+    it->SkipEmptyNodesOn();
+    for (it->InitTraversal(); !it->IsDoneWithTraversal(); it->GoToNextItem())
     {
-      error = std::string("field-data array ") + name + " holds a non-finite value";
-      return false;
+      leaves.emplace_back(static_cast<int>(it->GetCurrentFlatIndex()), it->GetCurrentDataObject());
     }
   }
-  return true;
+  else if (input)
+  {
+    leaves.emplace_back(0, input);
+  }
+  return leaves;
 }
 
-// Rule 1 of the class comment. Returns false with `error` set for malformed
-// field data; `found` tells whether the sampler's grid is there at all.
-bool GridFromFieldData(vtkFieldData* fd, AnalysisGrid& grid, bool& found, std::string& error)
-{
-  double origin[3], spacing[3], extent[6];
-  double direction[9] = { 1, 0, 0, 0, 1, 0, 0, 0, 1 };
-  const bool hasOrigin = ReadFieldValues(fd, "SamplingGridOrigin", 3, origin, error);
-  const bool hasSpacing =
-    error.empty() && ReadFieldValues(fd, "SamplingGridSpacing", 3, spacing, error);
-  const bool hasExtent =
-    error.empty() && ReadFieldValues(fd, "SamplingGridExtent", 6, extent, error);
-  if (error.empty())
-  {
-    ReadFieldValues(fd, "SamplingGridDirection", 9, direction, error);
-  }
-  found = hasOrigin || hasSpacing || hasExtent;
-  if (!error.empty())
-  {
-    return false;
-  }
-  if (!found)
-  {
-    return true;
-  }
-  if (!(hasOrigin && hasSpacing && hasExtent))
-  {
-    error = "the field data has only part of SamplingGridOrigin, SamplingGridSpacing and "
-            "SamplingGridExtent";
-    return false;
-  }
-  for (int a = 0; a < 3; ++a)
-  {
-    if (spacing[a] == 0.0)
-    {
-      error = "SamplingGridSpacing has a zero component";
-      return false;
-    }
-    if (extent[2 * a + 1] < extent[2 * a] || extent[2 * a] != std::floor(extent[2 * a]) ||
-      extent[2 * a + 1] != std::floor(extent[2 * a + 1]))
-    {
-      error = "SamplingGridExtent is not an extent (i0 i1 j0 j1 k0 k1 with whole i0 <= i1 ...)";
-      return false;
-    }
-    grid.Origin[a] = origin[a];
-    grid.Spacing[a] = spacing[a];
-    grid.Lower[a] = static_cast<int>(extent[2 * a]);
-    grid.Dimensions[a] = static_cast<int>(extent[2 * a + 1] - extent[2 * a]) + 1;
-  }
-  const double d[3][3] = { { direction[0], direction[1], direction[2] },
-    { direction[3], direction[4], direction[5] }, { direction[6], direction[7], direction[8] } };
-  if (std::abs(vtkMath::Determinant3x3(d)) < 1e-12)
-  {
-    error = "SamplingGridDirection is singular";
-    return false;
-  }
-  vtkMath::Invert3x3(d, grid.Inverse);
-  return true;
-}
-
-// Checks the input array of an image realisation: one component of point or
-// cell data.
-bool CheckImageArray(vtkDataArray* array, int association, bool& cells, std::string& error)
+// Checks the input array of an image realization: one component of point or
+// cell data, one value per point or cell.
+bool CheckImageArray(
+  vtkImageData* image, vtkDataArray* array, int association, bool& cells, std::string& error)
 {
   if (!array)
   {
@@ -201,15 +98,236 @@ bool CheckImageArray(vtkDataArray* array, int association, bool& cells, std::str
     error = "the input array must be point or cell data";
     return false;
   }
+  std::ostringstream msg;
+  const vtkIdType expected = cells ? image->GetNumberOfCells() : image->GetNumberOfPoints();
   if (array->GetNumberOfComponents() != 1)
   {
-    std::ostringstream msg;
     msg << "the input array '" << (array->GetName() ? array->GetName() : "") << "' has "
         << array->GetNumberOfComponents() << " components; counts need one";
-    error = msg.str();
-    return false;
   }
-  return true;
+  else if (array->GetNumberOfTuples() != expected)
+  {
+    msg << "the input array has " << array->GetNumberOfTuples() << " values for " << expected
+        << (cells ? " cells" : " points");
+  }
+  error = msg.str();
+  return error.empty();
+}
+
+// The grid an image's array lives on, as an extent: its points, or its cells
+// (one fewer along every axis that is not flat).
+void SignalExtent(const int pointExtent[6], bool cells, int extent[6])
+{
+  for (int a = 0; a < 3; ++a)
+  {
+    const bool flat = pointExtent[2 * a + 1] == pointExtent[2 * a];
+    extent[2 * a] = pointExtent[2 * a];
+    extent[2 * a + 1] = (cells && !flat) ? pointExtent[2 * a + 1] - 1 : pointExtent[2 * a + 1];
+  }
+}
+
+// Calls visit(id, i, j, k) for the points or cells of an image piece that the
+// piece owns: structured pieces share their faces' points with the next piece,
+// which owns them unless the face is the whole extent's (the sampler's rule).
+template <typename Visit>
+void ForEachOwned(vtkImageData* image, bool cells, const int wholePoints[6], Visit visit)
+{
+  int pointExtent[6], extent[6];
+  image->GetExtent(pointExtent);
+  SignalExtent(pointExtent, cells, extent);
+  int last[3];
+  for (int a = 0; a < 3; ++a)
+  {
+    const bool shared = !cells && pointExtent[2 * a + 1] < wholePoints[2 * a + 1];
+    last[a] = shared ? extent[2 * a + 1] - 1 : extent[2 * a + 1];
+  }
+  vtkIdType id = 0;
+  for (int k = extent[4]; k <= extent[5]; ++k)
+  {
+    for (int j = extent[2]; j <= extent[3]; ++j)
+    {
+      for (int i = extent[0]; i <= extent[1]; ++i, ++id)
+      {
+        if (i <= last[0] && j <= last[1] && k <= last[2])
+        {
+          visit(id, i, j, k);
+        }
+      }
+    }
+  }
+}
+
+// Rule 3's grid: GridDimensions points over finite bounds.
+void CheckBoundsGrid(const int dims[3], const double bounds[6], std::ostringstream& error)
+{
+  for (int a = 0; a < 3 && error.tellp() == 0; ++a)
+  {
+    if (dims[a] < 2)
+    {
+      error << "GridDimensions must be at least 2 on every axis, not " << dims[0] << " " << dims[1]
+            << " " << dims[2] << ".";
+    }
+    else if (!(std::isfinite(bounds[2 * a]) && std::isfinite(bounds[2 * a + 1]) &&
+               bounds[2 * a] <= bounds[2 * a + 1]))
+    {
+      error << "Invalid grid bounds on axis " << a << ": [" << bounds[2 * a] << ", "
+            << bounds[2 * a + 1] << "].";
+    }
+  }
+}
+
+// Realization i's grid against realization 0's: one shape, at least 2 on every axis.
+void CheckShape(const int* dims, const int* first, std::size_t i, std::ostringstream& error)
+{
+  if (i == 0 && (dims[0] < 2 || dims[1] < 2 || dims[2] < 2))
+  {
+    error << "Cannot analyse the grid: grid dimensions " << dims[0] << " x " << dims[1] << " x "
+          << dims[2] << " are invalid: every dimension must be at least 2.";
+  }
+  else if (!std::equal(dims, dims + 3, first))
+  {
+    error << "Realisation " << i << " has a " << dims[0] << " x " << dims[1] << " x " << dims[2]
+          << " grid but realisation 0 has " << first[0] << " x " << first[1] << " x " << first[2]
+          << ": all realisations must share one grid shape.";
+  }
+}
+
+// Points to their nearest grid points; the grid points are computed in
+// parallel, kept in point order.
+void BinPoints(vtkPointSet* data, const vtkBlueNoiseSpectrumGrid& grid, Samples& samples)
+{
+  vtkPoints* points = data->GetPoints();
+  const vtkIdType n = points ? points->GetNumberOfPoints() : 0;
+  std::vector<long long> located(static_cast<std::size_t>(n));
+  vtkSMPTools::For(0, n,
+    [&](vtkIdType first, vtkIdType last)
+    {
+      double p[3];
+      for (vtkIdType id = first; id < last; ++id)
+      {
+        points->GetPoint(id, p);
+        located[id] = grid.Locate(p);
+      }
+    });
+  samples.Voxels.reserve(located.size());
+  for (long long voxel : located)
+  {
+    if (voxel >= 0)
+    {
+      samples.Voxels.push_back(voxel);
+    }
+  }
+  samples.Counters[0] += n - static_cast<long long>(samples.Voxels.size());
+  samples.Counters[1] += n;
+}
+
+// An image's point or cell centers (half a voxel in, except along a flat axis
+// of a 2D image), weighted by the array values, to their nearest grid points.
+bool BinImageCentres(vtkImageData* image, vtkDataArray* array, bool cells, const int wholePoints[6],
+  const vtkBlueNoiseSpectrumGrid& grid, Samples& samples, std::string& error)
+{
+  int extent[6];
+  image->GetExtent(extent);
+  double offset[3];
+  for (int a = 0; a < 3; ++a)
+  {
+    offset[a] = (cells && extent[2 * a + 1] != extent[2 * a]) ? 0.5 : 0.0;
+  }
+  bool ok = true;
+  ForEachOwned(image, cells, wholePoints,
+    [&](vtkIdType id, int i, int j, int k)
+    {
+      const double w = array->GetComponent(id, 0);
+      if (!ok || w == 0.0)
+      {
+        return;
+      }
+      if (!(w >= 0.0 && w <= VTK_FLOAT_MAX))
+      {
+        std::ostringstream msg;
+        msg << "the value " << w << " of tuple " << id << " is not a finite non-negative count";
+        error = msg.str();
+        ok = false;
+        return;
+      }
+      ++samples.Counters[1];
+      double p[3];
+      image->TransformContinuousIndexToPhysicalPoint(
+        i + offset[0], j + offset[1], k + offset[2], p);
+      const long long voxel = grid.Locate(p);
+      if (voxel < 0)
+      {
+        ++samples.Counters[0];
+        return;
+      }
+      samples.Voxels.push_back(voxel);
+      samples.Values.push_back(static_cast<float>(w));
+    });
+  return ok;
+}
+
+// The non-zero values of an image piece with their voxels in the whole
+// image's signal grid, each voxel from one piece.
+void ImageArraySamples(
+  vtkImageData* image, vtkDataArray* array, bool cells, const int wholePoints[6], Samples& samples)
+{
+  int whole[6];
+  SignalExtent(wholePoints, cells, whole);
+  const long long nx = whole[1] - whole[0] + 1;
+  const long long ny = whole[3] - whole[2] + 1;
+  ForEachOwned(image, cells, wholePoints,
+    [&](vtkIdType id, int i, int j, int k)
+    {
+      const double v = array->GetComponent(id, 0);
+      if (v != 0.0)
+      {
+        samples.Voxels.push_back((i - whole[0]) + nx * ((j - whole[2]) + ny * (k - whole[4])));
+        samples.Values.push_back(v);
+      }
+    });
+}
+
+// An image's array as one realization on its own grid: uint8, float and
+// double arrays as they are, other types converted to double.
+bool AddImageArray(vtkBlueNoiseSpectrumKernel& kernel, vtkDataArray* array, std::string& error)
+{
+  if (auto bytes = vtkUnsignedCharArray::SafeDownCast(array))
+  {
+    return kernel.AddRealisation(bytes->GetPointer(0), &error);
+  }
+  if (auto floats = vtkFloatArray::SafeDownCast(array))
+  {
+    return kernel.AddRealisation(floats->GetPointer(0), &error);
+  }
+  if (auto doubles = vtkDoubleArray::SafeDownCast(array))
+  {
+    return kernel.AddRealisation(doubles->GetPointer(0), &error);
+  }
+  std::vector<double> converted(static_cast<std::size_t>(array->GetNumberOfTuples()));
+  for (std::size_t v = 0; v < converted.size(); ++v)
+  {
+    converted[v] = array->GetComponent(static_cast<vtkIdType>(v), 0);
+  }
+  return kernel.AddRealisation(converted.data(), &error);
+}
+
+// Gathered samples into the kernel: an image's values as a volume, points as
+// samples (their values are the float weights they were binned with).
+bool AddGathered(vtkBlueNoiseSpectrumKernel& kernel, SignalKind kind, std::size_t voxels,
+  const Samples& samples, std::string& error)
+{
+  if (kind == SignalKind::ImageArray)
+  {
+    std::vector<double> volume(voxels, 0.0);
+    for (std::size_t s = 0; s < samples.Voxels.size(); ++s)
+    {
+      volume[samples.Voxels[s]] = samples.Values[s];
+    }
+    return kernel.AddRealisation(volume.data(), &error);
+  }
+  std::vector<float> weights(samples.Values.begin(), samples.Values.end());
+  return kernel.AddSamples(samples.Voxels.data(), weights.empty() ? nullptr : weights.data(),
+    samples.Voxels.size(), &error);
 }
 
 void AddFieldValue(vtkFieldData* fd, const char* name, double value)
@@ -230,6 +348,42 @@ vtkSmartPointer<vtkDoubleArray> MakeColumn(const char* name, const std::vector<d
   return column;
 }
 
+void FillTable(vtkTable* table, const vtkBlueNoiseSpectrumKernel::Result& result)
+{
+  table->AddColumn(MakeColumn("Frequency", result.Frequency));
+  table->AddColumn(MakeColumn("RadialPower", result.RadialPower));
+  table->AddColumn(MakeColumn("Anisotropy", result.Anisotropy));
+  table->AddColumn(MakeColumn("AnisotropyDB", result.AnisotropyDB));
+  table->AddColumn(MakeColumn("SRAPS_XY", result.SrapsXY));
+  table->AddColumn(MakeColumn("SRAPS_XZ", result.SrapsXZ));
+  table->AddColumn(MakeColumn("SRAPS_YZ", result.SrapsYZ));
+  vtkNew<vtkIdTypeArray> shellCount;
+  shellCount->SetName("ShellCount");
+  shellCount->SetNumberOfValues(static_cast<vtkIdType>(result.ShellCount.size()));
+  std::copy(result.ShellCount.begin(), result.ShellCount.end(), shellCount->GetPointer(0));
+  table->AddColumn(shellCount);
+
+  vtkFieldData* fd = table->GetFieldData();
+  AddFieldValue(fd, "NumberOfPoints", result.NumberOfPoints);
+  AddFieldValue(fd, "Density", result.Density);
+  AddFieldValue(fd, "PrincipalFrequency", result.PrincipalFrequency);
+  AddFieldValue(fd, "LowFrequencyRatio", result.LowFrequencyRatio);
+  AddFieldValue(fd, "SymmetryCorrelation", result.SymmetryCorrelation);
+  AddFieldValue(fd, "Symmetry", result.Symmetry);
+  AddFieldValue(fd, "TargetValue", result.TargetValue);
+  vtkNew<vtkIntArray> realisationCount;
+  realisationCount->SetName("Realisations");
+  realisationCount->SetNumberOfValues(1);
+  realisationCount->SetValue(0, result.Realisations);
+  fd->AddArray(realisationCount);
+  vtkNew<vtkIntArray> gridDimensions;
+  gridDimensions->SetName("GridDimensions");
+  gridDimensions->SetNumberOfComponents(3);
+  gridDimensions->SetNumberOfTuples(1);
+  gridDimensions->SetTypedTuple(0, result.Dimensions);
+  fd->AddArray(gridDimensions);
+}
+
 void SpectrumImageGeometry(const int dims[3], int extent[6], double spacing[3], double origin[3])
 {
   for (int a = 0; a < 3; ++a)
@@ -240,7 +394,57 @@ void SpectrumImageGeometry(const int dims[3], int extent[6], double spacing[3], 
     origin[a] = -static_cast<double>(dims[a] / 2) / dims[a];
   }
 }
+
+// The spectrum image's whole extent when the grid was not known, or known
+// differently, when it was announced (see the class comment).
+void SetSpectrumWholeExtent(vtkInformation* imageInfo, const int dims[3])
+{
+  int extent[6];
+  double spacing[3], origin[3];
+  SpectrumImageGeometry(dims, extent, spacing, origin);
+  int announced[6] = { 0, -1, 0, -1, 0, -1 };
+  imageInfo->Get(vtkStreamingDemandDrivenPipeline::WHOLE_EXTENT(), announced);
+  if (!std::equal(extent, extent + 6, announced))
+  {
+    imageInfo->Set(vtkStreamingDemandDrivenPipeline::WHOLE_EXTENT(), extent, 6);
+  }
 }
+
+bool FillSpectrumImage(vtkBlueNoiseSpectrumKernel& kernel, const int dims[3], vtkImageData* image)
+{
+  double* values = kernel.NewCentredPowerSpectrum();
+  if (!values)
+  {
+    return false;
+  }
+  int extent[6];
+  double spacing[3], origin[3];
+  SpectrumImageGeometry(dims, extent, spacing, origin);
+  image->SetExtent(extent);
+  image->SetSpacing(spacing);
+  image->SetOrigin(origin);
+  vtkNew<vtkDoubleArray> power;
+  power->SetName("Power");
+  power->SetArray(values, static_cast<vtkIdType>(dims[0]) * dims[1] * dims[2], 0,
+    vtkAbstractArray::VTK_DATA_ARRAY_FREE);
+  image->GetPointData()->SetScalars(power);
+  return true;
+}
+}
+
+//------------------------------------------------------------------------------
+// One realization: this process's piece of it (Data null when it has none),
+// its description (this piece's, then, once combined, the whole's), and the
+// analysis grid with the kind of signal.
+struct vtkBlueNoiseSpectrum::Realization
+{
+  Description Whole;
+  vtkDataSet* Data = nullptr;
+  vtkDataArray* Array = nullptr;
+  SignalKind Kind = SignalKind::Points;
+  bool GridFromBounds = false; // rule 3: the grid is built over the bounds
+  vtkBlueNoiseSpectrumGrid Grid;
+};
 
 //------------------------------------------------------------------------------
 vtkBlueNoiseSpectrum::vtkBlueNoiseSpectrum()
@@ -279,48 +483,75 @@ int vtkBlueNoiseSpectrum::FillOutputPortInformation(int port, vtkInformation* in
 }
 
 //------------------------------------------------------------------------------
-int vtkBlueNoiseSpectrum::RequestInformation(
-  vtkInformation*, vtkInformationVector** inputVector, vtkInformationVector* outputVector)
+bool vtkBlueNoiseSpectrum::AnnouncedDimensions(vtkInformationVector** inputVector, int dims[3])
 {
-  // Best guess of the spectrum image's shape; RequestData sets the real one
-  // (a grid from field data is only known once the input data exists).
-  int dims[3] = { this->GridDimensions[0], this->GridDimensions[1], this->GridDimensions[2] };
+  std::copy(this->GridDimensions, this->GridDimensions + 3, dims);
   vtkInformation* inInfo = inputVector[0]->GetInformationObject(0);
   const auto wholeExtentKey = vtkStreamingDemandDrivenPipeline::WHOLE_EXTENT();
   if (this->UseInputGrid && inInfo && inInfo->Has(wholeExtentKey))
   {
+    // An image's extent, or the sampled image's extent the sampler's output
+    // information carries.
     int extent[6];
     inInfo->Get(wholeExtentKey, extent);
     vtkInformation* arrayInfo = this->GetInputArrayInformation(0);
-    const int cellShift = (arrayInfo->Has(vtkDataObject::FIELD_ASSOCIATION()) &&
-                            arrayInfo->Get(vtkDataObject::FIELD_ASSOCIATION()) ==
-                              vtkDataObject::FIELD_ASSOCIATION_CELLS)
-      ? 1
-      : 0;
+    const bool cells = vtkImageData::SafeDownCast(inInfo->Get(vtkDataObject::DATA_OBJECT())) &&
+      arrayInfo->Has(vtkDataObject::FIELD_ASSOCIATION()) &&
+      arrayInfo->Get(vtkDataObject::FIELD_ASSOCIATION()) == vtkDataObject::FIELD_ASSOCIATION_CELLS;
+    int signal[6];
+    SignalExtent(extent, cells, signal);
     for (int a = 0; a < 3; ++a)
     {
-      dims[a] = std::max(1, extent[2 * a + 1] - extent[2 * a] + 1 - cellShift);
+      dims[a] = signal[2 * a + 1] - signal[2 * a] + 1;
     }
   }
-  vtkInformation* imageInfo = outputVector->GetInformationObject(1);
-  if (this->GenerateSpectrumImage && dims[0] >= 1 && dims[1] >= 1 && dims[2] >= 1)
+  else if (this->UseInputGrid)
   {
-    int extent[6];
+    return false; // a point set: its field data may hold a grid
+  }
+  return dims[0] >= 2 && dims[1] >= 2 && dims[2] >= 2;
+}
+
+//------------------------------------------------------------------------------
+int vtkBlueNoiseSpectrum::RequestInformation(
+  vtkInformation*, vtkInformationVector** inputVector, vtkInformationVector* outputVector)
+{
+  vtkInformation* imageInfo = outputVector->GetInformationObject(1);
+  int extent[6] = { 0, -1, 0, -1, 0, -1 };
+  int dims[3];
+  if (this->GenerateSpectrumImage && this->AnnouncedDimensions(inputVector, dims))
+  {
     double spacing[3], origin[3];
     SpectrumImageGeometry(dims, extent, spacing, origin);
-    imageInfo->Set(wholeExtentKey, extent, 6);
     imageInfo->Set(vtkDataObject::SPACING(), spacing, 3);
     imageInfo->Set(vtkDataObject::ORIGIN(), origin, 3);
     vtkDataObject::SetPointDataActiveScalarInfo(imageInfo, VTK_DOUBLE, 1);
   }
+  imageInfo->Set(vtkStreamingDemandDrivenPipeline::WHOLE_EXTENT(), extent, 6);
   return 1;
 }
 
 //------------------------------------------------------------------------------
-int vtkBlueNoiseSpectrum::RequestUpdateExtent(
-  vtkInformation*, vtkInformationVector** inputVector, vtkInformationVector*)
+void vtkBlueNoiseSpectrum::ShareOutputRequest(
+  vtkInformation* request, vtkInformationVector* outputVector)
 {
-  // The spectrum needs every realisation whole.
+  using SDDP = vtkStreamingDemandDrivenPipeline;
+  const int from = request->Has(SDDP::FROM_OUTPUT_PORT())
+    ? std::max(0, request->Get(SDDP::FROM_OUTPUT_PORT()))
+    : 0;
+  vtkInformation* fromInfo = outputVector->GetInformationObject(from);
+  vtkInformation* otherInfo = outputVector->GetInformationObject(1 - from);
+  otherInfo->CopyEntry(fromInfo, SDDP::UPDATE_PIECE_NUMBER());
+  otherInfo->CopyEntry(fromInfo, SDDP::UPDATE_NUMBER_OF_PIECES());
+  otherInfo->CopyEntry(fromInfo, SDDP::UPDATE_NUMBER_OF_GHOST_LEVELS());
+}
+
+//------------------------------------------------------------------------------
+int vtkBlueNoiseSpectrum::RequestUpdateExtent(
+  vtkInformation* request, vtkInformationVector** inputVector, vtkInformationVector* outputVector)
+{
+  ShareOutputRequest(request, outputVector);
+  // The spectrum needs every realization whole.
   const auto sddp = vtkStreamingDemandDrivenPipeline::WHOLE_EXTENT();
   for (int c = 0; c < inputVector[0]->GetNumberOfInformationObjects(); ++c)
   {
@@ -347,6 +578,18 @@ bool vtkBlueNoiseSpectrum::IsAborted()
 }
 
 //------------------------------------------------------------------------------
+bool vtkBlueNoiseSpectrum::ShareDescriptions(std::vector<double>&)
+{
+  return true;
+}
+
+//------------------------------------------------------------------------------
+bool vtkBlueNoiseSpectrum::GatherSamples(std::vector<long long>&, std::vector<double>&, long long*)
+{
+  return true;
+}
+
+//------------------------------------------------------------------------------
 int vtkBlueNoiseSpectrum::RequestData(
   vtkInformation*, vtkInformationVector** inputVector, vtkInformationVector* outputVector)
 {
@@ -354,331 +597,34 @@ int vtkBlueNoiseSpectrum::RequestData(
   vtkImageData* image = vtkImageData::GetData(outputVector, 1);
   table->Initialize();
   image->Initialize();
+  this->NumberOfTransformedRealizations = 0;
 
-  // --- Realisations: every non-empty leaf of every connection.
-  std::vector<Realisation> realisations;
-  for (int c = 0; c < inputVector[0]->GetNumberOfInformationObjects(); ++c)
+  std::vector<Realization> pieces;
+  std::vector<Realization> realizations;
+  if (!this->ValidateInputs(inputVector, pieces) || !this->CombinePieces(pieces, realizations) ||
+    !this->BuildGrids(realizations))
   {
-    vtkDataObject* input = vtkDataObject::GetData(inputVector[0], c);
-    std::vector<vtkDataObject*> leaves;
-    if (auto composite = vtkCompositeDataSet::SafeDownCast(input))
-    {
-      vtkSmartPointer<vtkCompositeDataIterator> it;
-      it.TakeReference(composite->NewIterator());
-      it->SkipEmptyNodesOn();
-      for (it->InitTraversal(); !it->IsDoneWithTraversal(); it->GoToNextItem())
-      {
-        leaves.push_back(it->GetCurrentDataObject());
-      }
-    }
-    else if (input)
-    {
-      leaves.push_back(input);
-    }
-    for (vtkDataObject* leaf : leaves)
-    {
-      Realisation r;
-      r.Data = vtkDataSet::SafeDownCast(leaf);
-      if (!vtkPointSet::SafeDownCast(leaf) && !vtkImageData::SafeDownCast(leaf))
-      {
-        vtkErrorMacro("Realisation " << realisations.size() << " is a " << leaf->GetClassName()
-                                     << ": only point sets and images are supported.");
-        return 0;
-      }
-      realisations.push_back(r);
-    }
-  }
-  if (realisations.empty())
-  {
-    vtkErrorMacro("The input has no realisation: connect point sets, images or composite "
-                  "datasets of those.");
     return 0;
   }
-
-  // --- The analysis grid of each realisation (rules 1-3 of the class comment).
-  bool needBounds = false;
-  for (std::size_t i = 0; i < realisations.size(); ++i)
-  {
-    Realisation& r = realisations[i];
-    if (r.Data->GetNumberOfPoints() == 0)
-    {
-      vtkErrorMacro("Realisation " << i << " (" << r.Data->GetClassName()
-                                   << ") has no points: the spectrum is undefined for N = 0.");
-      return 0;
-    }
-    std::string error;
-    auto image = vtkImageData::SafeDownCast(r.Data);
-    if (image)
-    {
-      int association = vtkDataObject::FIELD_ASSOCIATION_POINTS;
-      r.Array = this->GetInputArrayToProcess(0, image, association);
-      vtkInformation* selection = this->GetInputArrayInformation(0);
-      if (!r.Array && selection->Has(vtkDataObject::FIELD_NAME()) &&
-        std::string(selection->Get(vtkDataObject::FIELD_NAME())).empty())
-      {
-        // An empty name (ParaView before an array is picked): the active scalars.
-        r.Array = image->GetPointData()->GetScalars();
-        association = vtkDataObject::FIELD_ASSOCIATION_POINTS;
-      }
-      if (!CheckImageArray(r.Array, association, r.CellArray, error))
-      {
-        vtkErrorMacro("Realisation " << i << ": " << error << ".");
-        return 0;
-      }
-      const vtkIdType expected =
-        r.CellArray ? image->GetNumberOfCells() : image->GetNumberOfPoints();
-      if (r.Array->GetNumberOfTuples() != expected)
-      {
-        vtkErrorMacro("Realisation " << i << ": the input array has "
-                                     << r.Array->GetNumberOfTuples() << " values for " << expected
-                                     << (r.CellArray ? " cells." : " points."));
-        return 0;
-      }
-    }
-    bool found = false;
-    if (this->UseInputGrid && image)
-    {
-      r.Kind = SignalKind::ImageArray;
-      int dims[3];
-      image->GetDimensions(dims);
-      for (int a = 0; a < 3; ++a)
-      {
-        r.Grid.Dimensions[a] = r.CellArray ? std::max(1, dims[a] - 1) : dims[a];
-      }
-    }
-    else if (this->UseInputGrid &&
-      GridFromFieldData(r.Data->GetFieldData(), r.Grid, found, error) && found)
-    {
-      r.Kind = SignalKind::Points;
-    }
-    else if (!error.empty())
-    {
-      vtkErrorMacro("Realisation " << i << ": " << error << ".");
-      return 0;
-    }
-    else
-    {
-      r.Kind = image ? SignalKind::WeightedPoints : SignalKind::Points;
-      r.GridFromBounds = true;
-      needBounds = true;
-    }
-  }
-
-  if (needBounds)
-  {
-    double bounds[6] = { VTK_DOUBLE_MAX, -VTK_DOUBLE_MAX, VTK_DOUBLE_MAX, -VTK_DOUBLE_MAX,
-      VTK_DOUBLE_MAX, -VTK_DOUBLE_MAX };
-    if (this->UseGridBounds)
-    {
-      std::copy(this->GridBounds, this->GridBounds + 6, bounds);
-    }
-    else
-    {
-      for (const Realisation& r : realisations)
-      {
-        if (!r.GridFromBounds)
-        {
-          continue;
-        }
-        double b[6];
-        r.Data->GetBounds(b);
-        for (int a = 0; a < 3; ++a)
-        {
-          bounds[2 * a] = std::min(bounds[2 * a], b[2 * a]);
-          bounds[2 * a + 1] = std::max(bounds[2 * a + 1], b[2 * a + 1]);
-        }
-      }
-    }
-    for (int a = 0; a < 3; ++a)
-    {
-      if (this->GridDimensions[a] < 2)
-      {
-        vtkErrorMacro("GridDimensions must be at least 2 on every axis, not "
-          << this->GridDimensions[0] << " " << this->GridDimensions[1] << " "
-          << this->GridDimensions[2] << ".");
-        return 0;
-      }
-      if (!(std::isfinite(bounds[2 * a]) && std::isfinite(bounds[2 * a + 1]) &&
-            bounds[2 * a] <= bounds[2 * a + 1]))
-      {
-        vtkErrorMacro("Invalid grid bounds on axis " << a << ": [" << bounds[2 * a] << ", "
-                                                     << bounds[2 * a + 1] << "].");
-        return 0;
-      }
-    }
-    AnalysisGrid grid;
-    for (int a = 0; a < 3; ++a)
-    {
-      grid.Dimensions[a] = this->GridDimensions[a];
-      grid.Origin[a] = bounds[2 * a];
-      const double extent = bounds[2 * a + 1] - bounds[2 * a];
-      grid.Spacing[a] = extent > 0.0 ? extent / (this->GridDimensions[a] - 1) : 1.0;
-    }
-    for (Realisation& r : realisations)
-    {
-      if (r.GridFromBounds)
-      {
-        r.Grid = grid;
-      }
-    }
-  }
-
-  const int* dims = realisations[0].Grid.Dimensions;
-  for (std::size_t i = 1; i < realisations.size(); ++i)
-  {
-    const int* d = realisations[i].Grid.Dimensions;
-    if (!std::equal(d, d + 3, dims))
-    {
-      vtkErrorMacro("Realisation " << i << " has a " << d[0] << " x " << d[1] << " x " << d[2]
-                                   << " grid but realisation 0 has " << dims[0] << " x " << dims[1]
-                                   << " x " << dims[2]
-                                   << ": all realisations must share one grid shape.");
-      return 0;
-    }
-  }
-
   vtkBlueNoiseSpectrumKernel kernel;
   kernel.SetWeight(this->Weight);
-  std::string error;
-  if (!kernel.SetDimensions(dims[0], dims[1], dims[2], &error))
+  const int accumulated = this->Accumulate(realizations, kernel);
+  if (accumulated < 0)
   {
-    vtkErrorMacro("Cannot analyse the grid: " << error << ".");
     return 0;
   }
-
-  // --- Feed the kernel.
-  std::vector<float> counts;
-  std::vector<double> converted;
-  vtkIdType outside = 0;
-  vtkIdType binned = 0;
-  for (std::size_t i = 0; i < realisations.size(); ++i)
+  const int* dims = realizations[0].Grid.Dimensions;
+  if (this->GenerateSpectrumImage)
   {
-    if (this->IsAborted())
-    {
-      return 1;
-    }
-    const Realisation& r = realisations[i];
-    const vtkIdType outsideBefore = outside;
-    bool ok = false;
-    if (r.Kind == SignalKind::ImageArray)
-    {
-      if (auto bytes = vtkUnsignedCharArray::SafeDownCast(r.Array))
-      {
-        ok = kernel.AddRealisation(bytes->GetPointer(0), &error);
-      }
-      else if (auto floats = vtkFloatArray::SafeDownCast(r.Array))
-      {
-        ok = kernel.AddRealisation(floats->GetPointer(0), &error);
-      }
-      else if (auto doubles = vtkDoubleArray::SafeDownCast(r.Array))
-      {
-        ok = kernel.AddRealisation(doubles->GetPointer(0), &error);
-      }
-      else
-      {
-        converted.resize(r.Grid.Size());
-        for (std::size_t v = 0; v < converted.size(); ++v)
-        {
-          converted[v] = r.Array->GetComponent(static_cast<vtkIdType>(v), 0);
-        }
-        ok = kernel.AddRealisation(converted.data(), &error);
-      }
-    }
-    else
-    {
-      counts.assign(r.Grid.Size(), 0.0f);
-      double p[3];
-      if (r.Kind == SignalKind::Points)
-      {
-        vtkPoints* points = vtkPointSet::SafeDownCast(r.Data)->GetPoints();
-        const vtkIdType n = points->GetNumberOfPoints();
-        for (vtkIdType id = 0; id < n; ++id)
-        {
-          points->GetPoint(id, p);
-          const long long index = r.Grid.Locate(p);
-          if (index < 0)
-          {
-            ++outside;
-            continue;
-          }
-          counts[index] += 1.0f;
-        }
-        binned += n;
-      }
-      else
-      {
-        // Values at the image's points, or at its cell centres (half a voxel
-        // in, except along a flat axis of a 2D image).
-        auto source = vtkImageData::SafeDownCast(r.Data);
-        int extent[6];
-        source->GetExtent(extent);
-        int last[3];
-        double offset[3];
-        for (int a = 0; a < 3; ++a)
-        {
-          const bool flat = extent[2 * a + 1] == extent[2 * a];
-          last[a] = (r.CellArray && !flat) ? extent[2 * a + 1] - 1 : extent[2 * a + 1];
-          offset[a] = (r.CellArray && !flat) ? 0.5 : 0.0;
-        }
-        vtkIdType id = 0;
-        for (int k = extent[4]; k <= last[2]; ++k)
-        {
-          for (int j = extent[2]; j <= last[1]; ++j)
-          {
-            for (int ii = extent[0]; ii <= last[0]; ++ii, ++id)
-            {
-              const double w = r.Array->GetComponent(id, 0);
-              if (!(w >= 0.0 && w <= VTK_FLOAT_MAX))
-              {
-                vtkErrorMacro("Realisation " << i << ": the value " << w << " of tuple " << id
-                                             << " is not a finite non-negative count.");
-                return 0;
-              }
-              if (w == 0.0)
-              {
-                continue;
-              }
-              ++binned;
-              source->TransformContinuousIndexToPhysicalPoint(
-                ii + offset[0], j + offset[1], k + offset[2], p);
-              const long long index = r.Grid.Locate(p);
-              if (index < 0)
-              {
-                ++outside;
-                continue;
-              }
-              counts[index] += static_cast<float>(w);
-            }
-          }
-        }
-      }
-      ok = kernel.AddRealisation(counts.data(), &error);
-    }
-    if (!ok)
-    {
-      std::string reason = error;
-      if (outside > outsideBefore)
-      {
-        reason += " (" + std::to_string(outside - outsideBefore) +
-          " samples lie outside the analysis grid)";
-      }
-      vtkErrorMacro("Realisation " << i << ": " << reason << ".");
-      return 0;
-    }
-    this->UpdateProgress(0.8 * static_cast<double>(i + 1) / realisations.size());
+    SetSpectrumWholeExtent(outputVector->GetInformationObject(1), dims);
   }
-  if (outside > 0)
+  if (accumulated == 0 || !this->IsRootProcess())
   {
-    vtkWarningMacro(<< outside << " of " << binned
-                    << " input samples lie outside the analysis grid and were ignored.");
-  }
-  if (this->IsAborted())
-  {
-    return 1;
+    return 1; // aborted, or another process computes
   }
 
-  // --- The metric.
   vtkBlueNoiseSpectrumKernel::Result result;
+  std::string error;
   if (!kernel.Compute(result, &error))
   {
     vtkErrorMacro("Cannot compute the spectrum: " << error << ".");
@@ -689,58 +635,308 @@ int vtkBlueNoiseSpectrum::RequestData(
     vtkWarningMacro("The spectrum is degenerate: " << result.Warning << ".");
   }
   this->UpdateProgress(0.9);
-
-  table->AddColumn(MakeColumn("Frequency", result.Frequency));
-  table->AddColumn(MakeColumn("RadialPower", result.RadialPower));
-  table->AddColumn(MakeColumn("Anisotropy", result.Anisotropy));
-  table->AddColumn(MakeColumn("AnisotropyDB", result.AnisotropyDB));
-  table->AddColumn(MakeColumn("SRAPS_XY", result.SrapsXY));
-  table->AddColumn(MakeColumn("SRAPS_XZ", result.SrapsXZ));
-  table->AddColumn(MakeColumn("SRAPS_YZ", result.SrapsYZ));
-  vtkNew<vtkIdTypeArray> shellCount;
-  shellCount->SetName("ShellCount");
-  shellCount->SetNumberOfValues(static_cast<vtkIdType>(result.ShellCount.size()));
-  std::copy(result.ShellCount.begin(), result.ShellCount.end(), shellCount->GetPointer(0));
-  table->AddColumn(shellCount);
-
-  vtkFieldData* fd = table->GetFieldData();
-  AddFieldValue(fd, "NumberOfPoints", result.NumberOfPoints);
-  AddFieldValue(fd, "Density", result.Density);
-  AddFieldValue(fd, "PrincipalFrequency", result.PrincipalFrequency);
-  AddFieldValue(fd, "LowFrequencyRatio", result.LowFrequencyRatio);
-  AddFieldValue(fd, "SymmetryCorrelation", result.SymmetryCorrelation);
-  AddFieldValue(fd, "Symmetry", result.Symmetry);
-  AddFieldValue(fd, "TargetValue", result.TargetValue);
-  vtkNew<vtkIntArray> realisationCount;
-  realisationCount->SetName("Realisations");
-  realisationCount->SetNumberOfValues(1);
-  realisationCount->SetValue(0, result.Realisations);
-  fd->AddArray(realisationCount);
-  vtkNew<vtkIntArray> gridDimensions;
-  gridDimensions->SetName("GridDimensions");
-  gridDimensions->SetNumberOfComponents(3);
-  gridDimensions->SetNumberOfTuples(1);
-  gridDimensions->SetTypedTuple(0, dims);
-  fd->AddArray(gridDimensions);
-
-  if (this->GenerateSpectrumImage)
+  FillTable(table, result);
+  if (this->GenerateSpectrumImage && !FillSpectrumImage(kernel, dims, image))
   {
-    int extent[6];
-    double spacing[3], origin[3];
-    SpectrumImageGeometry(dims, extent, spacing, origin);
-    image->SetExtent(extent);
-    image->SetSpacing(spacing);
-    image->SetOrigin(origin);
-    vtkNew<vtkDoubleArray> power;
-    power->SetName("Power");
-    power->SetNumberOfValues(static_cast<vtkIdType>(realisations[0].Grid.Size()));
-    kernel.GetCentredPowerSpectrum(power->GetPointer(0));
-    image->GetPointData()->SetScalars(power);
-    outputVector->GetInformationObject(1)->Set(
-      vtkStreamingDemandDrivenPipeline::WHOLE_EXTENT(), extent, 6);
+    vtkErrorMacro("Cannot allocate the " << dims[0] << " x " << dims[1] << " x " << dims[2]
+                                         << " spectrum image.");
+    table->Initialize();
+    return 0;
   }
   this->UpdateProgress(1.0);
   return 1;
+}
+
+//------------------------------------------------------------------------------
+bool vtkBlueNoiseSpectrum::ValidateInputs(
+  vtkInformationVector** inputVector, std::vector<Realization>& pieces)
+{
+  // Every non-empty leaf of every connection is a realization.
+  bool ok = true;
+  for (int c = 0; ok && c < inputVector[0]->GetNumberOfInformationObjects(); ++c)
+  {
+    for (const auto& leaf : Leaves(vtkDataObject::GetData(inputVector[0], c)))
+    {
+      Realization piece;
+      piece.Whole.Connection = c;
+      piece.Whole.Leaf = leaf.first;
+      piece.Data = vtkDataSet::SafeDownCast(leaf.second);
+      if (!vtkPointSet::SafeDownCast(leaf.second) && !vtkImageData::SafeDownCast(leaf.second))
+      {
+        vtkErrorMacro("Realisation " << pieces.size() << " is a " << leaf.second->GetClassName()
+                                     << ": only point sets and images are supported.");
+        ok = false;
+        break;
+      }
+      ok = this->DescribePiece(piece, static_cast<int>(pieces.size()));
+      pieces.push_back(piece);
+      if (!ok)
+      {
+        break;
+      }
+    }
+  }
+  return this->AllSucceeded(ok);
+}
+
+//------------------------------------------------------------------------------
+bool vtkBlueNoiseSpectrum::DescribePiece(Realization& piece, int index)
+{
+  Description& d = piece.Whole;
+  d.NumberOfPoints = piece.Data->GetNumberOfPoints();
+  if (d.NumberOfPoints > 0)
+  {
+    piece.Data->GetBounds(d.Bounds);
+  }
+  std::string error;
+  auto image = vtkImageData::SafeDownCast(piece.Data);
+  if (image)
+  {
+    d.IsImage = true;
+    image->GetExtent(d.ImageExtent);
+    int association = vtkDataObject::FIELD_ASSOCIATION_POINTS;
+    piece.Array = this->GetInputArrayToProcess(0, image, association);
+    vtkInformation* selection = this->GetInputArrayInformation(0);
+    if (!piece.Array && selection->Has(vtkDataObject::FIELD_NAME()) &&
+      std::string(selection->Get(vtkDataObject::FIELD_NAME())).empty())
+    {
+      // An empty name (ParaView before an array is picked): the active scalars.
+      piece.Array = image->GetPointData()->GetScalars();
+      association = vtkDataObject::FIELD_ASSOCIATION_POINTS;
+    }
+    // A piece without points (of a distributed image) has nothing to check.
+    if (d.NumberOfPoints > 0 &&
+      !CheckImageArray(image, piece.Array, association, d.CellArray, error))
+    {
+      vtkErrorMacro("Realisation " << index << ": " << error << ".");
+      return false;
+    }
+  }
+  else if (this->UseInputGrid && !d.ReadSamplingGrid(piece.Data->GetFieldData(), error))
+  {
+    vtkErrorMacro("Realisation " << index << ": " << error << ".");
+    return false;
+  }
+  return true;
+}
+
+//------------------------------------------------------------------------------
+bool vtkBlueNoiseSpectrum::CombinePieces(
+  std::vector<Realization>& pieces, std::vector<Realization>& realizations)
+{
+  std::vector<double> records(pieces.size() * Description::PackedSize);
+  for (std::size_t i = 0; i < pieces.size(); ++i)
+  {
+    pieces[i].Whole.Pack(records.data() + i * Description::PackedSize);
+  }
+  if (!this->ShareDescriptions(records))
+  {
+    return false;
+  }
+  // One realization per (connection, leaf), in that order, merged over the
+  // pieces of every process; this process's piece keeps its data.
+  std::vector<Description> all(records.size() / Description::PackedSize);
+  for (std::size_t i = 0; i < all.size(); ++i)
+  {
+    all[i].Unpack(records.data() + i * Description::PackedSize);
+  }
+  std::stable_sort(all.begin(), all.end(),
+    [](const Description& a, const Description& b)
+    { return std::make_pair(a.Connection, a.Leaf) < std::make_pair(b.Connection, b.Leaf); });
+  std::string error;
+  for (const Description& piece : all)
+  {
+    const bool same = !realizations.empty() &&
+      realizations.back().Whole.Connection == piece.Connection &&
+      realizations.back().Whole.Leaf == piece.Leaf;
+    if (!same)
+    {
+      realizations.emplace_back();
+      realizations.back().Whole = piece;
+    }
+    else if (!realizations.back().Whole.Merge(piece, error))
+    {
+      vtkErrorMacro("Realisation " << realizations.size() - 1 << ": " << error << ".");
+      return false;
+    }
+  }
+  for (Realization& realization : realizations)
+  {
+    for (const Realization& piece : pieces)
+    {
+      if (piece.Whole.Connection == realization.Whole.Connection &&
+        piece.Whole.Leaf == realization.Whole.Leaf)
+      {
+        realization.Data = piece.Data;
+        realization.Array = piece.Array;
+      }
+    }
+  }
+  if (realizations.empty())
+  {
+    vtkErrorMacro("The input has no realisation: connect point sets, images or composite "
+                  "datasets of those.");
+    return false;
+  }
+  return true;
+}
+
+//------------------------------------------------------------------------------
+bool vtkBlueNoiseSpectrum::BuildGrids(std::vector<Realization>& realizations)
+{
+  // The analysis grid of each realization (rules 1-3 of the class comment).
+  double bounds[6] = { VTK_DOUBLE_MAX, -VTK_DOUBLE_MAX, VTK_DOUBLE_MAX, -VTK_DOUBLE_MAX,
+    VTK_DOUBLE_MAX, -VTK_DOUBLE_MAX };
+  bool needBounds = false;
+  std::ostringstream error;
+  for (std::size_t i = 0; i < realizations.size() && error.tellp() == 0; ++i)
+  {
+    Realization& r = realizations[i];
+    const Description& d = r.Whole;
+    if (d.NumberOfPoints == 0)
+    {
+      error << "Realisation " << i << " ("
+            << (r.Data ? r.Data->GetClassName() : (d.IsImage ? "vtkImageData" : "vtkPointSet"))
+            << ") has no points: the spectrum is undefined for N = 0.";
+    }
+    else if (this->UseInputGrid && d.IsImage)
+    {
+      r.Kind = SignalKind::ImageArray;
+      int signal[6];
+      SignalExtent(d.ImageExtent, d.CellArray, signal);
+      const int dims[3] = { signal[1] - signal[0] + 1, signal[3] - signal[2] + 1,
+        signal[5] - signal[4] + 1 };
+      r.Grid.SetDimensions(dims);
+    }
+    else if (this->UseInputGrid && d.HasSamplingGrid)
+    {
+      r.Kind = SignalKind::Points;
+      r.Grid.SetFromSamplingGrid(d);
+    }
+    else
+    {
+      r.Kind = d.IsImage ? SignalKind::WeightedPoints : SignalKind::Points;
+      r.GridFromBounds = needBounds = true;
+      vtkBlueNoiseSpectrumGrid::UniteBounds(bounds, d.Bounds);
+    }
+  }
+  if (needBounds && error.tellp() == 0)
+  {
+    const double* over = this->UseGridBounds ? this->GridBounds : bounds;
+    CheckBoundsGrid(this->GridDimensions, over, error);
+    for (Realization& r : realizations)
+    {
+      if (r.GridFromBounds)
+      {
+        r.Grid.SetFromBounds(this->GridDimensions, over);
+      }
+    }
+  }
+  for (std::size_t i = 0; i < realizations.size() && error.tellp() == 0; ++i)
+  {
+    CheckShape(realizations[i].Grid.Dimensions, realizations[0].Grid.Dimensions, i, error);
+  }
+  if (error.tellp() != 0)
+  {
+    vtkErrorMacro(<< error.str());
+    return false;
+  }
+  return true;
+}
+
+//------------------------------------------------------------------------------
+int vtkBlueNoiseSpectrum::Accumulate(
+  const std::vector<Realization>& realizations, vtkBlueNoiseSpectrumKernel& kernel)
+{
+  // Only the root process transforms, so only it needs the kernel's buffers.
+  const int* dims = realizations[0].Grid.Dimensions;
+  std::string error;
+  const bool ready =
+    !this->IsRootProcess() || kernel.SetDimensions(dims[0], dims[1], dims[2], &error);
+  if (!ready)
+  {
+    vtkErrorMacro("Cannot analyse the grid: " << error << ".");
+  }
+  if (!this->AllSucceeded(ready))
+  {
+    return -1;
+  }
+  long long outside = 0;
+  long long binned = 0;
+  for (std::size_t i = 0; i < realizations.size(); ++i)
+  {
+    if (this->IsAborted())
+    {
+      return 0;
+    }
+    long long counters[2] = { 0, 0 };
+    if (!this->AddRealization(realizations[i], static_cast<int>(i), kernel, counters))
+    {
+      return -1;
+    }
+    outside += counters[0];
+    binned += counters[1];
+    this->UpdateProgress(0.8 * static_cast<double>(i + 1) / realizations.size());
+  }
+  if (outside > 0 && this->IsRootProcess())
+  {
+    vtkWarningMacro(<< outside << " of " << binned
+                    << " input samples lie outside the analysis grid and were ignored.");
+  }
+  return this->IsAborted() ? 0 : 1;
+}
+
+//------------------------------------------------------------------------------
+bool vtkBlueNoiseSpectrum::AddRealization(
+  const Realization& r, int index, vtkBlueNoiseSpectrumKernel& kernel, long long counters[2])
+{
+  std::string error;
+  bool ok = true;
+  if (r.Kind == SignalKind::ImageArray && !this->IsDistributed())
+  {
+    ok = AddImageArray(kernel, r.Array, error);
+  }
+  else
+  {
+    // This process's samples, then every process's on the root process.
+    Samples samples;
+    auto image = vtkImageData::SafeDownCast(r.Data);
+    if (r.Kind == SignalKind::ImageArray && image)
+    {
+      ImageArraySamples(image, r.Array, r.Whole.CellArray, r.Whole.ImageExtent, samples);
+    }
+    else if (r.Kind == SignalKind::WeightedPoints && image)
+    {
+      ok = BinImageCentres(
+        image, r.Array, r.Whole.CellArray, r.Whole.ImageExtent, r.Grid, samples, error);
+    }
+    else if (auto points = vtkPointSet::SafeDownCast(r.Data))
+    {
+      BinPoints(points, r.Grid, samples);
+    }
+    if (!ok)
+    {
+      vtkErrorMacro("Realisation " << index << ": " << error << ".");
+    }
+    if (!this->AllSucceeded(ok) ||
+      !this->GatherSamples(samples.Voxels, samples.Values, samples.Counters))
+    {
+      return false;
+    }
+    std::copy(samples.Counters, samples.Counters + 2, counters);
+    ok = !this->IsRootProcess() || AddGathered(kernel, r.Kind, r.Grid.Size(), samples, error);
+  }
+  if (!ok)
+  {
+    if (counters[0] > 0)
+    {
+      error += " (" + std::to_string(counters[0]) + " samples lie outside the analysis grid)";
+    }
+    vtkErrorMacro("Realisation " << index << ": " << error << ".");
+  }
+  this->NumberOfTransformedRealizations += (ok && this->IsRootProcess()) ? 1 : 0;
+  // The root process may fail alone (N = 0 inside the grid): all stop together.
+  return this->AllSucceeded(ok);
 }
 
 //------------------------------------------------------------------------------
@@ -756,4 +952,6 @@ void vtkBlueNoiseSpectrum::PrintSelf(ostream& os, vtkIndent indent)
      << this->GridBounds[5] << "\n";
   os << indent << "UseGridBounds: " << this->UseGridBounds << "\n";
   os << indent << "GenerateSpectrumImage: " << this->GenerateSpectrumImage << "\n";
+  os << indent << "NumberOfTransformedRealizations: " << this->NumberOfTransformedRealizations
+     << "\n";
 }

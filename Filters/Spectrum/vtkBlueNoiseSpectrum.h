@@ -14,10 +14,10 @@
  *
  * Input (port 0, repeatable): every connection is a vtkPointSet (e.g. the
  * vtkPolyData of vtkErrorDiffusionSampler), a vtkImageData, or a composite
- * dataset of those; each non-empty leaf is one realisation. Realisations are
+ * dataset of those; each non-empty leaf is one realization. Realizations are
  * averaged (mean of their periodograms) and must all give the same grid shape.
  *
- * The analysis grid of a realisation, when UseInputGrid is on (default):
+ * The analysis grid of a realization, when UseInputGrid is on (default):
  * 1. a point set carrying the sampler's field data `SamplingGridOrigin` (3),
  *    `SamplingGridSpacing` (3), `SamplingGridExtent` (6: i0 i1 j0 j1 k0 k1)
  *    and optionally `SamplingGridDirection` (9, row major, index to physical:
@@ -27,43 +27,56 @@
  *    cell-data array uses the cell grid), one component, read as counts (the
  *    sampler's uint8 mask counts one point per set voxel);
  * 3. otherwise GridDimensions points (default 64^3) spread evenly over the
- *    union of the bounds of all such realisations, or over GridBounds when
+ *    union of the bounds of all such realizations, or over GridBounds when
  *    UseGridBounds is on; the first and last grid points lie on the bounds.
- * With UseInputGrid off, rule 3 applies to every realisation (an image then
- * contributes its point or cell centres weighted by the array values).
- * Points go to the nearest grid point (voxel centre); points outside the grid
+ * With UseInputGrid off, rule 3 applies to every realization (an image then
+ * contributes its point or cell centers weighted by the array values).
+ * Points go to the nearest grid point (voxel center); points outside the grid
  * are dropped with a warning giving their number.
  *
  * Output port 0, vtkTable, one row per radial shell 1 .. nmax: `Frequency`
  * (cycles per voxel), `RadialPower`, `Anisotropy`, `AnisotropyDB` (floored at
  * -300 dB), `SRAPS_XY`, `SRAPS_XZ`, `SRAPS_YZ` (vtkDoubleArray) and
  * `ShellCount` (vtkIdTypeArray, full-spectrum sample count). Field data:
- * one-tuple vtkDoubleArrays `NumberOfPoints` (mean over realisations),
+ * one-tuple vtkDoubleArrays `NumberOfPoints` (mean over realizations),
  * `Density`, `PrincipalFrequency`, `LowFrequencyRatio`, `SymmetryCorrelation`,
  * `Symmetry`, `TargetValue`, and vtkIntArrays `Realisations` (1 tuple) and
  * `GridDimensions` (3 components).
  *
  * Output port 1, vtkImageData (when GenerateSpectrumImage is on): the averaged
  * power spectrum P(f) = |B(f)|^2 / N as the point array `Power` (double), zero
- * frequency centred: spacing 1/Lx, 1/Ly, 1/Lz, origin -floor(L/2)/L per axis,
+ * frequency centered: spacing 1/Lx, 1/Ly, 1/Lz, origin -floor(L/2)/L per axis,
  * so point coordinates are frequencies in cycles per voxel and (0, 0, 0) is the
  * point of index floor(L/2) on every axis; the DC value is 0.
  *
- * Errors (vtkErrorMacro, both outputs empty): no realisation, a realisation
+ * Errors (vtkErrorMacro, both outputs empty): no realization, a realization
  * without points or with N = 0 inside the grid, no or a multi-component array,
- * a grid dimension below 2, realisations of different grid shapes, negative or
+ * a grid dimension below 2, realizations of different grid shapes, negative or
  * non-finite counts, malformed SamplingGrid field data, a singular direction
  * matrix. A mask with every voxel set (g = 1) has no power off DC: a warning,
  * and L = 0, anisotropy 0, S = 1 by convention.
  *
- * Caveats: the whole spectrum needs every realisation in full, so the filter
- * asks for the whole extent and piece 0 of 1 of its inputs (each rank of a
- * parallel run computes the full metric of what it is given). When the grid
- * comes from field data, the spectrum image's whole extent is known only once
- * the filter has executed; RequestInformation announces the best guess (the
- * input image's extent or GridDimensions) and RequestData corrects it.
- * Memory is about 12 bytes per voxel of the grid, plus 4 bytes per voxel for
- * binned point inputs and 8 per voxel for the spectrum image.
+ * Pipeline: the whole spectrum needs every realization in full, so the filter
+ * asks for the whole extent and piece 0 of 1 of its inputs (each process of a
+ * parallel run computes the full metric of what it is given; vtkPBlueNoiseSpectrum
+ * computes it once from the pieces of all processes). One update executes the
+ * filter once for both outputs. The spectrum image's whole extent is announced
+ * in RequestInformation from what the input's information tells: an image's
+ * extent, the sampled image's extent that vtkErrorDiffusionSampler's output
+ * information carries, or GridDimensions with UseInputGrid off; an empty extent
+ * when GenerateSpectrumImage is off. A point set whose information carries no
+ * extent may still hold the sampler's grid in its field data, which only the
+ * data tells: then the whole extent is announced empty and set by RequestData,
+ * so that no consumer can ask for an extent the data will not have. (A point
+ * set whose information carries an extent but whose data has no sampling grid
+ * uses GridDimensions, which differs from what was announced; a consumer that
+ * asks for the announced extent then executes the filter again.)
+ *
+ * Memory: the kernel's (about 8 bytes per voxel of the grid for one
+ * realization, 12 for several), 16 bytes per binned point (28 for weighted
+ * image centers), and 8 bytes per voxel for the spectrum image. A 512^3 grid
+ * with 6.7 million points: 1.40 GB peak resident for a process that also
+ * holds those points and their mask, 2.34 GB with the spectrum image.
  *
  * @sa vtkBlueNoiseSpectrumKernel vtkErrorDiffusionSampler
  */
@@ -73,6 +86,9 @@
 #include "vtkFiltersBlueNoiseModule.h" // for export macro
 #include "vtkTableAlgorithm.h"
 
+#include <vector> // for the hooks of distributed subclasses
+
+class vtkBlueNoiseSpectrumKernel;
 class vtkImageData;
 
 class VTKFILTERSBLUENOISE_EXPORT vtkBlueNoiseSpectrum : public vtkTableAlgorithm
@@ -95,7 +111,7 @@ public:
   /**
    * Use the grid the input carries (sampler field data, or an image's own
    * grid) when there is one. Off forces GridDimensions for every
-   * realisation. Default on.
+   * realization. Default on.
    */
   vtkSetMacro(UseInputGrid, bool);
   vtkGetMacro(UseInputGrid, bool);
@@ -126,18 +142,25 @@ public:
 
   ///@{
   /**
-   * Produce the centred power spectrum image on output port 1. Default on.
+   * Produce the centered power spectrum image on output port 1. Default on.
    */
   vtkSetMacro(GenerateSpectrumImage, bool);
   vtkGetMacro(GenerateSpectrumImage, bool);
   vtkBooleanMacro(GenerateSpectrumImage, bool);
   ///@}
 
-  /// Output port 1: the centred power spectrum.
+  /// Output port 1: the centered power spectrum.
   vtkImageData* GetSpectrumImageOutput();
 
-  /// Add one more realisation (a new connection on the repeatable input port).
+  /// Add one more realization (a new connection on the repeatable input port).
   void AddInputData(vtkDataObject* input) { this->AddInputDataObject(0, input); }
+
+  /**
+   * The number of realizations this process transformed in its last
+   * execution: all of them in a serial run, none on the processes of a
+   * distributed run (vtkPBlueNoiseSpectrum) that only contribute samples.
+   */
+  vtkGetMacro(NumberOfTransformedRealizations, int);
 
 protected:
   vtkBlueNoiseSpectrum();
@@ -149,18 +172,64 @@ protected:
   int RequestUpdateExtent(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
   int RequestData(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
 
+  ///@{
+  /**
+   * Where the work happens, for distributed subclasses (vtkPBlueNoiseSpectrum).
+   * The serial filter computes everything from what its own process holds.
+   * - IsRootProcess(): whether this process transforms the realizations,
+   *   computes the metric and fills the outputs (the others leave them empty).
+   * - IsDistributed(): whether the pieces of one realization may lie on other
+   *   processes (image pieces are then sent voxel by voxel, each voxel once).
+   * - ShareDescriptions(records): `records` holds this process's grid
+   *   descriptions (vtkBlueNoiseSpectrumGrid::Description::Pack); on return it
+   *   holds those of every process, in the same order on every process.
+   * - GatherSamples(voxels, values, counters): one realization's binned samples
+   *   of this process (values empty: one point each) and its counters (samples
+   *   outside the grid, samples binned); on return, on the root process, those
+   *   of every process in process order, the counters summed.
+   * - AllSucceeded(ok): true when every process succeeded; each process
+   *   reports its own errors.
+   * - IsAborted(): the abort flag, the same on every process.
+   */
+  virtual bool IsRootProcess() { return true; }
+  virtual bool IsDistributed() { return false; }
+  virtual bool ShareDescriptions(std::vector<double>& records);
+  virtual bool GatherSamples(
+    std::vector<long long>& voxels, std::vector<double>& values, long long counters[2]);
+  virtual bool AllSucceeded(bool ok) { return ok; }
+  virtual bool IsAborted();
+  ///@}
+
+  /**
+   * Both outputs come from one execution: the piece asked for on one output
+   * becomes the request of the other too, so that the executive records one
+   * request for both and a later request of the other output finds it met.
+   */
+  static void ShareOutputRequest(vtkInformation* request, vtkInformationVector* outputVector);
+
   double Weight = 0.02;
   bool UseInputGrid = true;
   int GridDimensions[3] = { 64, 64, 64 };
   double GridBounds[6] = { 0.0, 1.0, 0.0, 1.0, 0.0, 1.0 };
   bool UseGridBounds = false;
   bool GenerateSpectrumImage = true;
+  int NumberOfTransformedRealizations = 0;
 
 private:
   vtkBlueNoiseSpectrum(const vtkBlueNoiseSpectrum&) = delete;
   void operator=(const vtkBlueNoiseSpectrum&) = delete;
 
-  bool IsAborted();
+  struct Realization; // one realization: this process's piece and the whole's grid
+
+  // The steps of RequestData.
+  bool ValidateInputs(vtkInformationVector** inputVector, std::vector<Realization>& pieces);
+  bool DescribePiece(Realization& piece, int index);
+  bool CombinePieces(std::vector<Realization>& pieces, std::vector<Realization>& realizations);
+  bool BuildGrids(std::vector<Realization>& realizations);
+  int Accumulate(const std::vector<Realization>& realizations, vtkBlueNoiseSpectrumKernel& kernel);
+  bool AddRealization(const Realization& realization, int index, vtkBlueNoiseSpectrumKernel& kernel,
+    long long counters[2]);
+  bool AnnouncedDimensions(vtkInformationVector** inputVector, int dims[3]);
 };
 
 #endif

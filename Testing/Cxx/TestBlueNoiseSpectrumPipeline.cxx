@@ -37,58 +37,23 @@ const double Spacing[3] = { 0.5, 0.25, 1.0 };
 // 90 degrees about z, row major, index to physical.
 const double Direction[9] = { 0, -1, 0, 1, 0, 0, 0, 0, 1 };
 
-template <typename ArrayT>
-void AddField(vtkPolyData* data, const char* name, int n, const double* v)
-{
-  vtkNew<ArrayT> array;
-  array->SetName(name);
-  array->SetNumberOfComponents(n);
-  array->SetNumberOfTuples(1);
-  for (int i = 0; i < n; ++i)
-  {
-    array->SetComponent(0, i, v[i]);
-  }
-  data->GetFieldData()->AddArray(array);
-}
-
 // The set voxels of `mask` as points at voxel centres, with the sampler's grid.
 vtkSmartPointer<vtkPolyData> SamplerPoints(const std::vector<unsigned char>& mask)
 {
-  vtkNew<vtkPoints> points;
-  points->SetDataTypeToDouble();
-  std::size_t v = 0;
-  for (int k = 0; k < Dims[2]; ++k)
-  {
-    for (int j = 0; j < Dims[1]; ++j)
+  auto data = MaskPoints(mask, Dims,
+    [](int i, int j, int k, double x[3])
     {
-      for (int i = 0; i < Dims[0]; ++i, ++v)
+      const double s[3] = { (i + Lower[0]) * Spacing[0], (j + Lower[1]) * Spacing[1],
+        (k + Lower[2]) * Spacing[2] };
+      for (int a = 0; a < 3; ++a)
       {
-        if (!mask[v])
-        {
-          continue;
-        }
-        const double s[3] = { (i + Lower[0]) * Spacing[0], (j + Lower[1]) * Spacing[1],
-          (k + Lower[2]) * Spacing[2] };
-        double x[3];
-        for (int a = 0; a < 3; ++a)
-        {
-          x[a] = Origin[a] + Direction[3 * a] * s[0] + Direction[3 * a + 1] * s[1] +
-            Direction[3 * a + 2] * s[2];
-        }
-        points->InsertNextPoint(x);
+        x[a] = Origin[a] + Direction[3 * a] * s[0] + Direction[3 * a + 1] * s[1] +
+          Direction[3 * a + 2] * s[2];
       }
-    }
-  }
-  auto data = vtkSmartPointer<vtkPolyData>::New();
-  data->SetPoints(points);
-  const double extent[6] = { static_cast<double>(Lower[0]),
-    static_cast<double>(Lower[0] + Dims[0] - 1), static_cast<double>(Lower[1]),
-    static_cast<double>(Lower[1] + Dims[1] - 1), static_cast<double>(Lower[2]),
-    static_cast<double>(Lower[2] + Dims[2] - 1) };
-  AddField<vtkDoubleArray>(data, "SamplingGridOrigin", 3, Origin);
-  AddField<vtkDoubleArray>(data, "SamplingGridSpacing", 3, Spacing);
-  AddField<vtkIntArray>(data, "SamplingGridExtent", 6, extent);
-  AddField<vtkDoubleArray>(data, "SamplingGridDirection", 9, Direction);
+    });
+  const int extent[6] = { Lower[0], Lower[0] + Dims[0] - 1, Lower[1], Lower[1] + Dims[1] - 1,
+    Lower[2], Lower[2] + Dims[2] - 1 };
+  AddSamplingGrid(data, Origin, Spacing, extent, Direction);
   return data;
 }
 
@@ -312,23 +277,14 @@ int main()
     std::vector<unsigned char> spanning = mask;
     spanning.front() = 1;
     spanning.back() = 1;
-    vtkNew<vtkPoints> points;
-    std::size_t v = 0;
-    for (int k = 0; k < Dims[2]; ++k)
-    {
-      for (int j = 0; j < Dims[1]; ++j)
+    vtkSmartPointer<vtkPolyData> data = MaskPoints(spanning, Dims,
+      [](int i, int j, int k, double x[3])
       {
-        for (int i = 0; i < Dims[0]; ++i, ++v)
-        {
-          if (spanning[v])
-          {
-            points->InsertNextPoint(10.0 + 2.0 * i, -5.0 + 0.5 * j, 3.0 * k);
-          }
-        }
-      }
-    }
-    vtkNew<vtkPolyData> data;
-    data->SetPoints(points);
+        x[0] = 10.0 + 2.0 * i;
+        x[1] = -5.0 + 0.5 * j;
+        x[2] = 3.0 * k;
+      });
+    vtkPoints* points = data->GetPoints();
     vtkNew<vtkBlueNoiseSpectrum> filter;
     filter->SetInputData(data);
     filter->SetGridDimensions(Dims[0], Dims[1], Dims[2]);

@@ -1,14 +1,21 @@
 // SPDX-FileCopyrightText: Copyright (c) 2025-2026 the BlueNoiseSampling contributors
 // SPDX-License-Identifier: BSD-3-Clause
-// Helpers shared by the spectrum tests: random volumes, tolerant comparison, a
-// NaN sweep over a kernel result and the filter's table read back as a result.
+// Helpers shared by the spectrum tests: random volumes, a mask's voxels as
+// points with the sampler's grid field data, tolerant comparison, a NaN sweep
+// over a kernel result and the filter's table read back as a result.
 #ifndef TestBlueNoiseSpectrumUtilities_h
 #define TestBlueNoiseSpectrumUtilities_h
 
 #include "BlueNoiseTestUtilities.h"
 #include "vtkBlueNoiseSpectrumKernel.h"
 #include "vtkDataArray.h"
+#include "vtkDoubleArray.h"
 #include "vtkFieldData.h"
+#include "vtkIntArray.h"
+#include "vtkNew.h"
+#include "vtkPoints.h"
+#include "vtkPolyData.h"
+#include "vtkSmartPointer.h"
 #include "vtkTable.h"
 
 #include <algorithm>
@@ -53,6 +60,62 @@ inline std::vector<double> RandomCounts(const int dims[3], std::mt19937& rng)
   return counts;
 }
 
+// The set voxels of an x-fastest mask on a dims grid as points, voxel (i, j, k)
+// at position(i, j, k, x).
+template <typename Position>
+vtkSmartPointer<vtkPolyData> MaskPoints(
+  const std::vector<unsigned char>& mask, const int dims[3], Position position)
+{
+  vtkNew<vtkPoints> points;
+  points->SetDataTypeToDouble();
+  std::size_t v = 0;
+  for (int k = 0; k < dims[2]; ++k)
+  {
+    for (int j = 0; j < dims[1]; ++j)
+    {
+      for (int i = 0; i < dims[0]; ++i, ++v)
+      {
+        if (mask[v])
+        {
+          double x[3];
+          position(i, j, k, x);
+          points->InsertNextPoint(x);
+        }
+      }
+    }
+  }
+  auto data = vtkSmartPointer<vtkPolyData>::New();
+  data->SetPoints(points);
+  return data;
+}
+
+// The sampler's field data: SamplingGridOrigin, SamplingGridSpacing,
+// SamplingGridExtent and, unless null, SamplingGridDirection (row major).
+inline void AddSamplingGrid(vtkPolyData* data, const double origin[3], const double spacing[3],
+  const int extent[6], const double* direction = nullptr)
+{
+  const auto add = [data](vtkDataArray* array, const char* name, int n, const double* v)
+  {
+    array->SetName(name);
+    array->SetNumberOfComponents(n);
+    array->SetNumberOfTuples(1);
+    for (int i = 0; i < n; ++i)
+    {
+      array->SetComponent(0, i, v[i]);
+    }
+    data->GetFieldData()->AddArray(array);
+  };
+  const double wholeExtent[6] = { double(extent[0]), double(extent[1]), double(extent[2]),
+    double(extent[3]), double(extent[4]), double(extent[5]) };
+  add(vtkNew<vtkDoubleArray>(), "SamplingGridOrigin", 3, origin);
+  add(vtkNew<vtkDoubleArray>(), "SamplingGridSpacing", 3, spacing);
+  add(vtkNew<vtkIntArray>(), "SamplingGridExtent", 6, wholeExtent);
+  if (direction)
+  {
+    add(vtkNew<vtkDoubleArray>(), "SamplingGridDirection", 9, direction);
+  }
+}
+
 // |a - b| <= rel * max(1, |a|, |b|).
 inline bool Close(double a, double b, double rel)
 {
@@ -94,7 +157,8 @@ inline long long TotalCount(const Result& r)
 // a failed check when a column or field array is missing.
 inline bool ResultFromTable(vtkTable* table, Result& r)
 {
-  const auto column = [table](const char* name, std::vector<double>& values) {
+  const auto column = [table](const char* name, std::vector<double>& values)
+  {
     vtkDataArray* array = vtkDataArray::SafeDownCast(table->GetColumnByName(name));
     if (!Check(array != nullptr, std::string("the table has no column ") + name))
     {
@@ -107,7 +171,8 @@ inline bool ResultFromTable(vtkTable* table, Result& r)
     }
     return true;
   };
-  const auto field = [table](const char* name, double& value) {
+  const auto field = [table](const char* name, double& value)
+  {
     vtkDataArray* array = table->GetFieldData()->GetArray(name);
     if (!Check(array != nullptr && array->GetNumberOfTuples() == 1,
           std::string("the table has no field array ") + name))
