@@ -264,10 +264,19 @@ bool vtkErrorDiffusionSampler::ReduceStatistics(vtkSamplingBudget&)
 // The plan of a run: the piece's layers, the overlap above it, and the steps
 // (statistics slabs, then sampling slabs), each one input request.
 int vtkErrorDiffusionSampler::RequestUpdateExtent(
-  vtkInformation*, vtkInformationVector** inputVector, vtkInformationVector* outputVector)
+  vtkInformation* request, vtkInformationVector** inputVector, vtkInformationVector* outputVector)
 {
+  // The piece is that of the port asked for; the other port gets the same
+  // request, so that asking for it next does not execute the filter again.
+  using SDDP = vtkStreamingDemandDrivenPipeline;
+  const int from =
+    request->Has(SDDP::FROM_OUTPUT_PORT()) ? std::max(0, request->Get(SDDP::FROM_OUTPUT_PORT())) : 0;
+  vtkInformation* outInfo = outputVector->GetInformationObject(from);
+  vtkInformation* otherInfo = outputVector->GetInformationObject(1 - from);
+  otherInfo->CopyEntry(outInfo, SDDP::UPDATE_PIECE_NUMBER());
+  otherInfo->CopyEntry(outInfo, SDDP::UPDATE_NUMBER_OF_PIECES());
+  otherInfo->CopyEntry(outInfo, SDDP::UPDATE_NUMBER_OF_GHOST_LEVELS());
   vtkInformation* inInfo = inputVector[0]->GetInformationObject(0);
-  vtkInformation* outInfo = outputVector->GetInformationObject(0);
   vtkInternals& run = *this->Internals;
   const auto sddp = vtkStreamingDemandDrivenPipeline::UPDATE_EXTENT();
   if (!run.Running)
@@ -320,6 +329,11 @@ int vtkErrorDiffusionSampler::RequestUpdateExtent(
   {
     run.StepExtent(run.Steps[run.Current], extent);
   }
+  // The mask is the sampled extent (a z-slab for a piece), whatever extent
+  // the pipeline translated the piece into for that port.
+  const int empty[6] = { 0, -1, 0, -1, 0, -1 };
+  vtkInformation* maskInfo = outputVector->GetInformationObject(1);
+  maskInfo->Set(sddp, this->GenerateMask ? run.Sampled : empty, 6);
   // The request is the extent alone: the piece is already in it.
   inInfo->Set(sddp, extent, 6);
   inInfo->Set(vtkStreamingDemandDrivenPipeline::UPDATE_PIECE_NUMBER(), 0);
@@ -822,6 +836,10 @@ void vtkErrorDiffusionSampler::FinishOutput(
     maskOutput->SetSpacing(spacing);
     maskOutput->SetDirectionMatrix(direction);
     maskOutput->GetPointData()->SetScalars(run.Mask);
+    // The mask's pieces do not overlap: say which extent this one owns.
+    vtkNew<vtkIntArray> owned;
+    AddFieldArray(maskOutput->GetFieldData(), owned, "SamplingGridExtent", 6);
+    std::copy(run.Sampled, run.Sampled + 6, owned->GetPointer(0));
   }
 }
 

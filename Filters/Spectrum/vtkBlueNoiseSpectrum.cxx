@@ -127,19 +127,24 @@ void SignalExtent(const int pointExtent[6], bool cells, int extent[6])
 }
 
 // Calls visit(id, i, j, k) for the points or cells of an image piece that the
-// piece owns: structured pieces share their faces' points with the next piece,
-// which owns them unless the face is the whole extent's (the sampler's rule).
+// piece owns: the extent its SamplingGridExtent field data names (the
+// sampler's mask: pieces that do not overlap), else VTK's rule that
+// structured pieces share their faces' points with the next piece, which
+// owns them unless the face is the whole extent's.
 template <typename Visit>
 void ForEachOwned(vtkImageData* image, bool cells, const int wholePoints[6], Visit visit)
 {
   int pointExtent[6], extent[6];
   image->GetExtent(pointExtent);
   SignalExtent(pointExtent, cells, extent);
+  auto* owned = vtkIntArray::SafeDownCast(image->GetFieldData()->GetArray("SamplingGridExtent"));
+  const bool named = !cells && owned && owned->GetNumberOfValues() == 6;
   int last[3];
   for (int a = 0; a < 3; ++a)
   {
     const bool shared = !cells && pointExtent[2 * a + 1] < wholePoints[2 * a + 1];
-    last[a] = shared ? extent[2 * a + 1] - 1 : extent[2 * a + 1];
+    last[a] = named ? std::min(extent[2 * a + 1], owned->GetValue(2 * a + 1))
+                    : (shared ? extent[2 * a + 1] - 1 : extent[2 * a + 1]);
   }
   vtkIdType id = 0;
   for (int k = extent[4]; k <= extent[5]; ++k)
