@@ -103,61 +103,82 @@ void vtkBlueNoiseRelaxation::Set(int x, int y, int z, bool sample)
 }
 
 //------------------------------------------------------------------------------
-// The squared distance from (x, y, z) to the nearest sample other than the
-// `except` voxel within `radius` along each axis, or `best` when none is
-// nearer than that; as soon as one is found at `enough` or nearer, that one.
-// Rows are visited outwards and skipped once they cannot hold anything nearer.
-int vtkBlueNoiseRelaxation::NearestSquared(int x, int y, int z, int radius, int best, int enough,
-  int exceptX, int exceptY, int exceptZ)
+// The rows (dz, dy) within `radius`, nearest first, for NearestSquared.
+void vtkBlueNoiseRelaxation::SetRadius(int radius)
 {
+  if (radius == this->Radius && !this->Rows.empty())
+  {
+    return;
+  }
+  this->Radius = radius;
+  this->Rows.clear();
+  for (int dz = -radius; dz <= radius; ++dz)
+  {
+    for (int dy = -radius; dy <= radius; ++dy)
+    {
+      this->Rows.push_back({ dz, dy, dz * dz + dy * dy });
+    }
+  }
+  std::stable_sort(this->Rows.begin(), this->Rows.end(),
+    [](const RowOffset& a, const RowOffset& b) { return a.Squared < b.Squared; });
+}
+
+//------------------------------------------------------------------------------
+// The squared distance from (x, y, z) to the nearest sample other than the
+// `except` voxel within Radius along each axis, or `best` when none is
+// nearer than that; as soon as one is found at `enough` or nearer, that one.
+// Rows are visited nearest first, and no further once they cannot hold
+// anything nearer than the best so far.
+int vtkBlueNoiseRelaxation::NearestSquared(
+  int x, int y, int z, int best, int enough, int exceptX, int exceptY, int exceptZ)
+{
+  const int radius = this->Radius;
+  // Only the layers that can hold a sample nearer than `best`.
+  int reach = 0;
+  while (reach < radius && (reach + 1) * (reach + 1) < best)
+  {
+    ++reach;
+  }
+  const std::uint64_t* layers[2 * MaximumRadius + 1] = {};
+  for (int dz = -reach; dz <= reach; ++dz)
+  {
+    const Slot* slot = this->Find(z + dz);
+    layers[dz + radius] = slot ? slot->Bits.data() : nullptr;
+  }
   const int x0 = std::max(0, x - radius);
   const int x1 = std::min(this->NX - 1, x + radius);
-  // Outwards, |dz| and |dy| never decrease: past `best` nothing nearer remains.
-  for (int i = 0; i < 2 * radius + 1; ++i)
+  const int shift = x0 & 63;
+  const std::uint64_t width = (std::uint64_t(1) << (x1 - x0 + 1)) - 1;
+  for (const RowOffset& row : this->Rows)
   {
-    const int dz = Outward(i);
-    if (dz * dz >= best)
+    if (row.Squared >= best)
     {
       break;
     }
-    const Slot* slot = this->Find(z + dz);
-    if (!slot)
+    const int Y = y + row.DY;
+    const std::uint64_t* bitsOfLayer = layers[row.DZ + radius];
+    if (!bitsOfLayer || Y < 0 || Y >= this->NY)
     {
       continue;
     }
-    for (int j = 0; j < 2 * radius + 1; ++j)
+    // The bits x0..x1 of the row: at most 17, in at most two words.
+    const std::uint64_t* words = bitsOfLayer + static_cast<size_t>(Y) * this->WordsPerRow + (x0 >> 6);
+    std::uint64_t bits = words[0] >> shift;
+    if (shift)
     {
-      const int dy = Outward(j);
-      const int Y = y + dy;
-      if (dz * dz + dy * dy >= best)
-      {
-        break;
-      }
-      if (Y < 0 || Y >= this->NY)
+      bits |= words[1] << (64 - shift);
+    }
+    for (bits &= width; bits; bits &= bits - 1)
+    {
+      const int X = x0 + __builtin_ctzll(bits);
+      if (X == exceptX && Y == exceptY && z + row.DZ == exceptZ)
       {
         continue;
       }
-      // The bits x0..x1 of the row: at most 17, in at most two words.
-      const std::uint64_t* row = slot->Bits.data() + static_cast<size_t>(Y) * this->WordsPerRow;
-      const int shift = x0 & 63;
-      std::uint64_t bits = row[x0 >> 6] >> shift;
-      if (shift)
+      best = std::min(best, (X - x) * (X - x) + row.Squared);
+      if (best <= enough)
       {
-        bits |= row[(x0 >> 6) + 1] << (64 - shift);
-      }
-      bits &= (std::uint64_t(1) << (x1 - x0 + 1)) - 1;
-      for (; bits; bits &= bits - 1)
-      {
-        const int X = x0 + __builtin_ctzll(bits);
-        if (X == exceptX && Y == exceptY && z + dz == exceptZ)
-        {
-          continue;
-        }
-        best = std::min(best, (X - x) * (X - x) + dy * dy + dz * dz);
-        if (best <= enough)
-        {
-          return best;
-        }
+        return best;
       }
     }
   }
@@ -171,13 +192,12 @@ void vtkBlueNoiseRelaxation::RelaxSample(int x, int y, int z, float g)
   {
     const double spacing = std::cbrt(1.0 / g);
     this->Limit = 0.75 * spacing * spacing;
-    this->Radius = std::min(static_cast<int>(std::ceil(0.87 * spacing)) + 1, MaximumRadius);
+    this->SetRadius(std::min(static_cast<int>(std::ceil(0.87 * spacing)) + 1, MaximumRadius));
     this->LastDensity = g;
   }
   // Only whether p has a sample nearer than the limit matters here.
-  const int cap = (this->Radius + 1) * (this->Radius + 1);
-  const int current = this->NearestSquared(
-    x, y, z, this->Radius, std::min(cap, static_cast<int>(std::ceil(this->Limit))), -1, x, y, z);
+  const int cap = static_cast<int>(std::ceil(this->Limit));
+  const int current = this->NearestSquared(x, y, z, cap, -1, x, y, z);
   if (current >= this->Limit)
   {
     return;
@@ -209,11 +229,15 @@ void vtkBlueNoiseRelaxation::RelaxSample(int x, int y, int z, float g)
       continue;
     }
     // A candidate with a sample as near as the best so far cannot win.
-    const int d = this->NearestSquared(X, Y, Z, this->Radius, cap, best, x, y, z);
+    const int d = this->NearestSquared(X, Y, Z, cap, best, x, y, z);
     if (d > best)
     {
       best = d;
       target = face;
+      if (best >= cap)
+      {
+        break;
+      }
     }
   }
   if (target >= 0)

@@ -91,8 +91,9 @@ private:
   bool Sample(int x, int y, int z);
   float DensityAt(int x, int y, int z);
   void Set(int x, int y, int z, bool sample);
-  int NearestSquared(int x, int y, int z, int radius, int best, int enough, int exceptX,
-    int exceptY, int exceptZ);
+  void SetRadius(int radius);
+  int NearestSquared(
+    int x, int y, int z, int best, int enough, int exceptX, int exceptY, int exceptZ);
   void RelaxLayer(int z);
   void RelaxSample(int x, int y, int z, float g);
   void Release(int z);
@@ -109,6 +110,13 @@ private:
   float LastDensity = -1.0f; // the density Limit and Radius are for
   double Limit = 0.0;
   int Radius = 1;
+  struct RowOffset
+  {
+    int DZ;
+    int DY;
+    int Squared;
+  };
+  std::vector<RowOffset> Rows; // within Radius, nearest first
   std::vector<Slot> Ring;
   std::vector<Layer> Done;
   std::vector<std::uint64_t> Order; // hash and index of a layer's samples
