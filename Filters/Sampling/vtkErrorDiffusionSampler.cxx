@@ -30,8 +30,11 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <cstdlib>
 #include <new>
 #include <sstream>
+#include <string>
+#include <thread>
 #include <vector>
 
 vtkStandardNewMacro(vtkErrorDiffusionSampler);
@@ -41,6 +44,29 @@ namespace
 {
 // Below this a second thread costs more than it saves.
 constexpr vtkIdType MinimumVoxelsForWorkerThread = 32768;
+
+// The threads vtkSMPTools would use. Its Sequential backend (Debian's VTK
+// and ParaView default to it) always says one; there VTK_SMP_MAX_THREADS, or
+// else the hardware, decides, so that a stock ParaView is not held to one
+// core while VTK_SMP_MAX_THREADS=1 still is.
+int AvailableThreads()
+{
+  const std::string backend = vtkSMPTools::GetBackend() ? vtkSMPTools::GetBackend() : "";
+  if (backend != "Sequential")
+  {
+    return vtkSMPTools::GetEstimatedNumberOfThreads();
+  }
+  if (const char* limit = std::getenv("VTK_SMP_MAX_THREADS"))
+  {
+    char* end = nullptr;
+    const long n = std::strtol(limit, &end, 10);
+    if (end != limit && *end == '\0' && n > 0)
+    {
+      return static_cast<int>(std::min<long>(n, 1024));
+    }
+  }
+  return static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
+}
 
 // Layers [first, last] split into `parts` contiguous ranges, as even as can be.
 std::vector<std::array<int, 2>> SplitLayers(int first, int last, int parts)
@@ -650,7 +676,7 @@ bool vtkErrorDiffusionSampler::ScanSlab(vtkImageData* input, vtkDataArray* array
   vtkErrorDiffusionLayerRunner runner;
   runner.SetThreaded(this->UseWorkerThread && layers > 1 &&
     layer * layers >= MinimumVoxelsForWorkerThread &&
-    vtkSMPTools::GetEstimatedNumberOfThreads() > 1);
+    AvailableThreads() > 1);
   runner.SetFill([&](int k, float* density) {
     const int z = step.First + k;
     const vtkIdType begin = (z - extent[4]) * layer;

@@ -71,8 +71,7 @@
  *
  * Time O(voxels); memory besides the input and the output a few layers. The
  * scan runs on a worker thread while this thread maps the densities and
- * builds the points (UseWorkerThread, and only when vtkSMPTools runs more than
- * one thread). Progress is reported per layer; abort is honored between
+ * builds the points (UseWorkerThread, when more than one thread is allowed). Progress is reported per layer; abort is honored between
  * layers and leaves an empty output.
  *
  * Bad input (no array, non-numeric or cell-data array, component out of range,
@@ -303,9 +302,11 @@ public:
    * Run the error-diffusion scan on a worker thread while the calling thread
    * maps the densities and builds the output points from the layers already
    * scanned (the scan itself is sequential: each voxel depends on the one
-   * before). Used when vtkSMPTools runs more than one thread
-   * (VTK_SMP_MAX_THREADS) and the volume has at least 32768 voxels and two
-   * layers; the output is identical either way. Default on.
+   * before). Used when vtkSMPTools runs more than one thread (with its
+   * Sequential backend, the default of Debian's VTK and ParaView, when
+   * VTK_SMP_MAX_THREADS, or else the hardware, allows more than one) and the
+   * volume has at least 32768 voxels and two layers; the output is identical
+   * either way. Default on.
    */
   vtkSetMacro(UseWorkerThread, bool);
   vtkGetMacro(UseWorkerThread, bool);
