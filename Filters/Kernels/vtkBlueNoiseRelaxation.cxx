@@ -175,7 +175,14 @@ int vtkBlueNoiseRelaxation::NearestSquared(
       {
         continue;
       }
-      best = std::min(best, (X - x) * (X - x) + row.Squared);
+      const int d = (X - x) * (X - x) + row.Squared;
+      if (d < best)
+      {
+        best = d;
+        this->Nearest[0] = X - x;
+        this->Nearest[1] = row.DY;
+        this->Nearest[2] = row.DZ;
+      }
       if (best <= enough)
       {
         return best;
@@ -202,6 +209,9 @@ void vtkBlueNoiseRelaxation::RelaxSample(int x, int y, int z, float g)
   {
     return;
   }
+  // A face f towards that nearest sample v (f . v >= 1) comes nearer to it
+  // (|v - f|^2 = |v|^2 - 2 f . v + 1 < |v|^2): it cannot win.
+  const int toward[3] = { this->Nearest[0], this->Nearest[1], this->Nearest[2] };
   // The six faces in a hashed order (Fisher-Yates on the hash's bits).
   std::uint64_t h = Hash(this->Seed ^ 0x5DEECE66DULL, x, y, z);
   int order[6] = { 0, 1, 2, 3, 4, 5 };
@@ -217,6 +227,13 @@ void vtkBlueNoiseRelaxation::RelaxSample(int x, int y, int z, float g)
   for (const int face : order)
   {
     const int* f = Faces[face];
+    // That sample is at |v - f|^2 from the candidate: no farther can it be.
+    const int bound = std::min(
+      cap, current - 2 * (f[0] * toward[0] + f[1] * toward[1] + f[2] * toward[2]) + 1);
+    if (bound <= best)
+    {
+      continue;
+    }
     const int X = x + f[0], Y = y + f[1], Z = z + f[2];
     if (X < 0 || X >= this->NX || Y < 0 || Y >= this->NY || Z < this->Finalized ||
       !this->Find(Z) || this->Sample(X, Y, Z))
@@ -229,7 +246,7 @@ void vtkBlueNoiseRelaxation::RelaxSample(int x, int y, int z, float g)
       continue;
     }
     // A candidate with a sample as near as the best so far cannot win.
-    const int d = this->NearestSquared(X, Y, Z, cap, best, x, y, z);
+    const int d = this->NearestSquared(X, Y, Z, bound, best, x, y, z);
     if (d > best)
     {
       best = d;

@@ -117,6 +117,7 @@ private:
     int Squared;
   };
   std::vector<RowOffset> Rows; // within Radius, nearest first
+  int Nearest[3] = { 0, 0, 0 }; // offset of the sample NearestSquared found
   std::vector<Slot> Ring;
   std::vector<Layer> Done;
   std::vector<std::uint64_t> Order; // hash and index of a layer's samples
