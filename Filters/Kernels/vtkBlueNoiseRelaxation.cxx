@@ -273,6 +273,10 @@ void vtkBlueNoiseRelaxation::RelaxLayer(int z)
 {
   Slot* slot = this->Find(z);
   this->Order.clear();
+  if (!slot->Relaxable)
+  {
+    return; // no sample may move in this layer, and none into it
+  }
   for (size_t i = 0; i < slot->Mask.size(); ++i)
   {
     if (slot->Mask[i] && !slot->Moved[i] && Relaxable(slot->Density[i]))
@@ -318,15 +322,17 @@ const std::vector<vtkBlueNoiseRelaxation::Layer>& vtkBlueNoiseRelaxation::Push(
   slot.Z = z;
   const size_t layer = slot.Mask.size();
   std::copy(density, density + layer, slot.Density.begin());
+  slot.Relaxable = std::any_of(density, density + layer, Relaxable);
   std::copy(mask, mask + layer, slot.Mask.begin());
   std::fill(slot.Moved.begin(), slot.Moved.end(), 0);
   std::fill(slot.Bits.begin(), slot.Bits.end(), 0);
-  for (size_t i = 0; i < layer; ++i)
+  for (int y = 0; y < this->NY; ++y)
   {
-    if (mask[i])
+    const unsigned char* row = mask + static_cast<size_t>(y) * this->NX;
+    std::uint64_t* words = slot.Bits.data() + static_cast<size_t>(y) * this->WordsPerRow;
+    for (int x = 0; x < this->NX; ++x)
     {
-      const int x = static_cast<int>(i % this->NX), y = static_cast<int>(i / this->NX);
-      slot.Bits[static_cast<size_t>(y) * this->WordsPerRow + (x >> 6)] |= std::uint64_t(1) << (x & 63);
+      words[x >> 6] |= static_cast<std::uint64_t>(row[x] != 0) << (x & 63);
     }
   }
   for (; this->Relaxed + MaximumRadius <= this->Last; ++this->Relaxed)

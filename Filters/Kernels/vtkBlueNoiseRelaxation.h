@@ -85,6 +85,7 @@ private:
     std::vector<unsigned char> Mask;
     std::vector<unsigned char> Moved; // samples that moved here: they move no more
     std::vector<std::uint64_t> Bits; // the mask, rows padded to whole words
+    bool Relaxable = false;          // some density of the layer is in (0, 1/4]
   };
 
   Slot* Find(int z);

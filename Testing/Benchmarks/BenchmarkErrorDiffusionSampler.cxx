@@ -214,6 +214,22 @@ void BM_Filter(benchmark::State& state)
   state.counters["points"] = static_cast<double>(sampler->GetOutput()->GetNumberOfPoints());
 }
 
+// The plain loop alone: the baseline of pvpython_update_pipeline.py.
+void BM_Plain(benchmark::State& state)
+{
+  const int n = static_cast<int>(state.range(0));
+  const double g = static_cast<double>(state.range(1)) / 255.0;
+  const bool floats = state.range(2) != 0;
+  auto image = floats ? Cube<vtkFloatArray>(n, g) : Cube<vtkUnsignedCharArray>(n, state.range(1));
+  double best = 1e30;
+  for (auto _ : state)
+  {
+    best = std::min(best,
+      floats ? PlainSeconds<float>(image, g) : PlainSeconds<unsigned char>(image, g));
+  }
+  state.counters["seconds"] = best;
+}
+
 // The kernel alone on the same cubes, against the plain loop.
 void BM_Kernel(benchmark::State& state)
 {
@@ -248,6 +264,11 @@ BENCHMARK(BM_Kernel)
   ->ArgNames({ "L", "g255" })
   ->ArgsProduct({ { 256 }, { 8, 127 } })
   ->ComputeStatistics("min", Fastest)
+  ->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_Plain)
+  ->ArgNames({ "L", "g255", "float" })
+  ->ArgsProduct({ { 256, 512 }, { 8, 127 }, { 0, 1 } })
+  ->Iterations(1)
   ->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_Filter)
   ->ArgNames({ "L", "g255", "float", "busy", "thread" })

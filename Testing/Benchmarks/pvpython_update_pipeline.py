@@ -1,0 +1,78 @@
+# SPDX-FileCopyrightText: Copyright (c) 2025-2026 the BlueNoiseSampling contributors
+# SPDX-License-Identifier: BSD-3-Clause
+"""The sampler's whole pvpython UpdatePipeline against the plain loop.
+
+    pvpython pvpython_update_pipeline.py --plugin BlueNoiseSampling.so \
+        --benchmark BenchmarkErrorDiffusionSampler [--sizes 256,512] [--repeats 3]
+
+For each constant cube (edge 256 or 512, g = 8/255 and 127/255, uint8 and
+float), times UpdatePipeline of an Error Diffusion Sampler proxy with its
+default settings but for the identity mapping and a budget of g * voxels
+(what BM_Filter does), fastest of --repeats, and the plain single-threaded
+loop of the same scan (BM_Plain of the benchmark program, run right after the
+case under the same load). Prints x_plain = plain seconds / UpdatePipeline
+seconds. No thresholds: figures for the README.
+"""
+import argparse
+import json
+import subprocess
+import time
+
+import numpy as np
+from paraview import servermanager
+from paraview.simple import LoadPlugin, PVTrivialProducer
+from vtkmodules.util.numpy_support import numpy_to_vtk
+from vtkmodules.vtkCommonDataModel import vtkImageData
+
+
+def cube(n, g255, floats):
+    image = vtkImageData()
+    image.SetDimensions(n, n, n)
+    values = np.full(n ** 3, g255 / 255.0 if floats else g255,
+                     np.float32 if floats else np.uint8)
+    array = numpy_to_vtk(values, deep=1)
+    array.SetName('values')
+    image.GetPointData().SetScalars(array)
+    return image
+
+
+def plain_seconds(benchmark, n, g255, floats):
+    name = 'BM_Plain/L:%d/g255:%d/float:%d' % (n, g255, floats)
+    out = subprocess.run([benchmark, '--benchmark_filter=^%s' % name, '--benchmark_format=json'],
+                         check=True, capture_output=True, text=True).stdout
+    return json.loads(out)['benchmarks'][0]['seconds']
+
+
+def main():
+    parser = argparse.ArgumentParser(description=__doc__.split('\n')[0])
+    parser.add_argument('--plugin', required=True)
+    parser.add_argument('--benchmark', required=True)
+    parser.add_argument('--sizes', default='256,512')
+    parser.add_argument('--repeats', type=int, default=3)
+    args = parser.parse_args()
+    LoadPlugin(args.plugin, remote=False, ns=globals())
+    print('| edge | g | input | UpdatePipeline s | plain loop s | x_plain |')
+    print('| ---: | ---: | --- | ---: | ---: | ---: |')
+    for n in [int(s) for s in args.sizes.split(',')]:
+        for g255 in (8, 127):
+            for floats in (0, 1):
+                producer = PVTrivialProducer()
+                producer.GetClientSideObject().SetOutput(cube(n, g255, floats))
+                sampler = ErrorDiffusionSampler(Input=producer)  # noqa: F821 (from the plugin)
+                sampler.DensityMapping = 'Identity'
+                sampler.NumberOfPoints = int(g255 / 255.0 * n ** 3)
+                best = float('inf')
+                for k in range(args.repeats):
+                    sampler.Seed = k  # a change of property: the next update executes
+                    start = time.perf_counter()
+                    sampler.UpdatePipeline()
+                    best = min(best, time.perf_counter() - start)
+                plain = plain_seconds(args.benchmark, n, g255, floats)
+                print('| %d | %d/255 | %s | %.3f | %.3f | %.2f |' % (
+                    n, g255, 'float' if floats else 'uint8', best, plain, plain / best), flush=True)
+                servermanager.ProxyManager().UnRegisterProxies()
+                del sampler, producer
+
+
+if __name__ == '__main__':
+    main()
