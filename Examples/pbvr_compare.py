@@ -6,21 +6,26 @@ Renders a volume three ways with the same colour and opacity transfer
 functions and the same camera, and measures the particle images against the
 ray-cast one:
 
-1. particles drawn by vtkErrorDiffusionSampler, Method ErrorDiffusion (blue noise);
-2. particles drawn by the same filter, Method WhiteNoise (hit-and-miss, the
+1. particles drawn by vtkErrorDiffusionSampler with its default method,
+   relaxed error diffusion (RED), and with the paper's error diffusion (ED);
+2. particles drawn by the same filter, Method WhiteNoise (WN: hit-and-miss, the
    sampling of Sakamoto's particle-based volume rendering, PBVR);
 3. the reference: ParaView's ray-cast volume representation.
+
+With --curve it also plots the error against the number of particles for each
+method (the image error curve of the README).
 
 Run with pvbatch (or pvpython) under a display:
 
     xvfb-run -a pvbatch Examples/pbvr_compare.py \\
         --plugin build/lib/paraview-5.11/plugins/BlueNoiseSampling/BlueNoiseSampling.so \\
         [--volume ch2bet.nii.gz] [--counts 3e4 1e5 3e5] [--size 480] [--out pbvr_compare.png]
+        [--curve pbvr_error_curve.png]
 
-It writes one PNG (a row per particle count: ED | WN | reference) and prints a
-line per count and method:
+It writes one PNG (a row per particle count: RED | ED | WN | reference) and
+prints a line per count and method:
 
-    RESULT count=<N> method=<ED|WN> particles=<n> radius=<r> scale=<s> clamped=<voxels>
+    RESULT count=<N> method=<RED|ED|WN> particles=<n> radius=<r> scale=<s> clamped=<voxels>
            jitter=<0|1> ensembles=<K> rmse=<..> rmse_covered=<..> rmse_lowpass=<..> bias=<..>
 
 Particle density, opacity and particle size (Sakamoto's PBVR)
@@ -51,10 +56,9 @@ The particles are drawn with the Point Gaussian representation, preset
 sorting), unlit (Ambient 1, Diffuse 0) like the unshaded volume rendering,
 coloured by their carried value through the same colour transfer function.
 With --jitter 1 (default) each particle is moved by a uniform random offset of
-up to half a voxel per axis (RandomAttributes + WarpByVector), as PBVR places
-particles anywhere in a cell: particles at voxel centres line up in columns
-when the view is close to a grid axis (a lattice pattern and too little
-coverage). One set of particles is one PBVR "ensemble"; --ensembles K averages the
+up to half a voxel per axis (the sampler's Jitter), as PBVR places particles
+anywhere in a cell: particles at voxel centres line up in columns when the
+view is close to a grid axis (a lattice pattern and too little coverage). One set of particles is one PBVR "ensemble"; --ensembles K averages the
 images of K independent particle sets (seeds seed .. seed + K - 1), Sakamoto's
 repetition level.
 
@@ -91,17 +95,19 @@ from paraview.simple import (
     Hide,
     LoadPlugin,
     OpenDataFile,
-    RandomAttributes,
     Render,
     SaveScreenshot,
     Show,
-    WarpByVector,
 )
 from vtkmodules.util.numpy_support import numpy_to_vtk, vtk_to_numpy
 from vtkmodules.vtkCommonDataModel import vtkImageData
 from vtkmodules.vtkIOImage import vtkPNGReader, vtkPNGWriter
 
 DEFAULT_VOLUME = "/usr/share/mricron/templates/ch2bet.nii.gz"
+# The sampler's methods compared: (Method, short name).
+METHODS = (("RelaxedErrorDiffusion", "RED"), ("ErrorDiffusion", "ED"), ("WhiteNoise", "WN"))
+LONG_NAMES = {"RED": "relaxed error diffusion (default)", "ED": "error diffusion (paper)",
+              "WN": "white noise (hit and miss)"}
 HERE = os.path.dirname(os.path.abspath(__file__))
 DEFAULT_PLUGIN = os.path.join(HERE, os.pardir, "build-apps", "lib", "paraview-5.11", "plugins",
                               "BlueNoiseSampling", "BlueNoiseSampling.so")
@@ -362,6 +368,8 @@ def main(argv=None):
     parser.add_argument("--reference-mode", default="GPU Based",
                         choices=["GPU Based", "Ray Cast Only", "Smart"],
                         help="VolumeRenderingMode of the reference (default 'GPU Based')")
+    parser.add_argument("--curve", default="",
+                        help="also plot the error against the particle count into this PNG")
     parser.add_argument("--keep-panels", default="",
                         help="folder to keep the single images in (default: a temporary one)")
     args = parser.parse_args(argv)
@@ -442,7 +450,7 @@ def main(argv=None):
             radius = h / math.sqrt(math.pi * scale)
             clamped = int(np.count_nonzero(scale * g0_of(values) > 1.0))
             panels = {}
-            for method, name in (("ErrorDiffusion", "ED"), ("WhiteNoise", "WN")):
+            for method, name in METHODS:
                 acc = None
                 n_total = 0
                 for e in range(args.ensembles):
@@ -454,21 +462,13 @@ def main(argv=None):
                     s.UseNumberOfPoints = 0
                     s.DensityScale = scale
                     s.Seed = args.seed + e
+                    # Each particle anywhere in its voxel (PBVR places particles
+                    # anywhere in a cell): voxel-centre particles line up in
+                    # columns when the view is near an axis of the grid.
+                    s.Jitter = args.jitter
                     s.UpdatePipeline()
                     n_total += s.GetDataInformation().GetNumberOfPoints()
                     chain = [s]
-                    if args.jitter:
-                        # Move each particle uniformly within its voxel (PBVR places
-                        # particles anywhere in a cell): voxel-centre particles line up
-                        # in columns when the view is near an axis of the grid.
-                        ra = RandomAttributes(Input=s)
-                        ra.DataType = "Float"
-                        ra.ComponentRange = [-0.5, 0.5]
-                        ra.GeneratePointVectors = 1
-                        wv = WarpByVector(Input=ra)
-                        wv.Vectors = ["POINTS", "RandomPointVectors"]
-                        wv.ScaleFactor = h
-                        chain += [ra, wv]
                     shown = chain[-1]
                     # The representation proxy named explicitly: the plugin's
                     # <RepresentationType type="Points"/> hint makes ParaView 5.11's
@@ -514,10 +514,10 @@ def main(argv=None):
                 return text_strip("%s  N=%.0f  r=%.2g  RMSE %.1f  low-pass %.1f"
                                   % (name, count, radius, r["rmse"], r["rmse_lowpass"]), args.size)
 
-            row = np.concatenate([
-                np.concatenate([label("ED"), panels["ED"]], axis=0),
-                np.concatenate([label("WN"), panels["WN"]], axis=0),
-                np.concatenate([text_strip("reference (ray cast)", args.size), ref], axis=0)], axis=1)
+            row = np.concatenate(
+                [np.concatenate([label(name), panels[name]], axis=0) for _, name in METHODS]
+                + [np.concatenate([text_strip("reference (ray cast)", args.size), ref], axis=0)],
+                axis=1)
             rows.append(row)
         mosaic = np.concatenate(rows, axis=0)
         out_dir = os.path.dirname(os.path.abspath(args.out))
@@ -531,9 +531,38 @@ def main(argv=None):
             print("%10.0f %6s %10.0f %8.3g %10.3f %10.3f %10.3f %10.3f"
                   % (r["count"], r["method"], r["particles"], r["radius"], r["rmse"],
                      r["rmse_covered"], r["rmse_lowpass"], r["bias"]))
+        if args.curve:
+            write_curve(args.curve, results, args)
     finally:
         shutil.rmtree(workdir, ignore_errors=True)
     return 0
+
+
+def write_curve(path, results, args):
+    """The image error against the number of particles, one line per method."""
+    import matplotlib
+    matplotlib.use("Agg")
+    import matplotlib.pyplot as plt
+    fig, axes = plt.subplots(1, 2, figsize=(10, 4))
+    for (_, name), style in zip(METHODS, ("o-", "s--", "^:")):
+        mine = sorted((r for r in results if r["method"] == name), key=lambda r: r["particles"])
+        x = [r["particles"] for r in mine]
+        axes[0].plot(x, [r["rmse_lowpass"] for r in mine], style, label=LONG_NAMES[name])
+        axes[1].plot(x, [r["rmse_covered"] for r in mine], style, label=LONG_NAMES[name])
+    for ax, title in zip(axes, ("after a blur of sigma %g px" % args.lowpass,
+                                "per pixel, where the reference is covered")):
+        ax.set_xscale("log")
+        ax.set_xlabel("particles")
+        ax.set_ylabel("luma RMSE against ray casting (8-bit)")
+        ax.set_title(title)
+        ax.grid(True, which="both", alpha=0.3)
+        ax.legend()
+    fig.suptitle("Particle-based volume rendering of %s (%d ensemble%s)"
+                 % (os.path.basename(args.volume), args.ensembles,
+                    "" if args.ensembles == 1 else "s"))
+    fig.tight_layout()
+    fig.savefig(path, dpi=100)
+    print("wrote %s" % path)
 
 
 if __name__ == "__main__":

@@ -106,8 +106,8 @@ def main():
         check(os.path.exists(png), "the PNG was written: %s" % png)
         if os.path.exists(png):
             w, h, a = png_size_and_content(png)
-            check(w == 3 * args.size and h > args.size, "the PNG is 3 panels wide: %dx%d" % (w, h))
-            panels = [a[:, i * args.size:(i + 1) * args.size, :3] for i in range(3)]
+            check(w == 4 * args.size and h > args.size, "the PNG is 4 panels wide: %dx%d" % (w, h))
+            panels = [a[:, i * args.size:(i + 1) * args.size, :3] for i in range(4)]
             lit = [float((p.max(axis=2) > 8).mean()) for p in panels]
             check(all(x > 0.02 for x in lit),
                   "every panel shows something (non-black fractions %s)"
@@ -120,7 +120,7 @@ def main():
             if line.startswith("RESULT "):
                 fields = dict(kv.split("=", 1) for kv in line.split()[1:])
                 results[fields["method"]] = fields
-        check(sorted(results) == ["ED", "WN"], "RESULT lines for ED and WN: %s" % sorted(results))
+        check(sorted(results) == ["ED", "RED", "WN"], "RESULT lines for RED, ED and WN: %s" % sorted(results))
         for method, fields in sorted(results.items()):
             numbers = {k: float(fields[k]) for k in ("rmse", "rmse_covered", "rmse_lowpass", "bias",
                                                      "particles", "radius")}
