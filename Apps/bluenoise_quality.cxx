@@ -27,6 +27,7 @@
 #include "vtkNew.h"
 #include "vtkPointData.h"
 #include "vtkPolyData.h"
+#include "vtkSmartPointer.h"
 #include "vtkUnsignedCharArray.h"
 
 #include <algorithm>
@@ -142,6 +143,21 @@ std::vector<unsigned char> PoissonDiskMask(int L, double target, unsigned seed)
   return mask;
 }
 
+// The sampler with `method` on `image` (its densities as they are), updated.
+vtkSmartPointer<vtkErrorDiffusionSampler> RunSampler(
+  vtkImageData* image, int method, int seed, bool mask)
+{
+  auto sampler = vtkSmartPointer<vtkErrorDiffusionSampler>::New();
+  sampler->SetInputData(image);
+  sampler->SetMethod(method);
+  sampler->SetDensityMappingToIdentity();
+  sampler->SetUseNumberOfPoints(false);
+  sampler->SetSeed(seed);
+  sampler->SetGenerateMask(mask);
+  sampler->Update();
+  return sampler;
+}
+
 // The sampler on a constant volume of density g: its sample mask.
 std::vector<unsigned char> SamplerMask(int size, double g, int method, int seed)
 {
@@ -152,14 +168,7 @@ std::vector<unsigned char> SamplerMask(int size, double g, int method, int seed)
   values->SetNumberOfValues(static_cast<vtkIdType>(size) * size * size);
   values->Fill(g);
   image->GetPointData()->SetScalars(values);
-  vtkNew<vtkErrorDiffusionSampler> sampler;
-  sampler->SetInputData(image);
-  sampler->SetMethod(method);
-  sampler->SetDensityMappingToIdentity();
-  sampler->SetUseNumberOfPoints(false);
-  sampler->SetSeed(seed);
-  sampler->GenerateMaskOn();
-  sampler->Update();
+  auto sampler = RunSampler(image, method, seed, true);
   auto* mask = vtkUnsignedCharArray::SafeDownCast(
     sampler->GetMaskOutput()->GetPointData()->GetArray("SampleMask"));
   if (!mask || mask->GetNumberOfValues() != values->GetNumberOfValues())
@@ -222,13 +231,7 @@ void PrintProfiles(int seed)
     for (int method : { vtkErrorDiffusionSampler::METHOD_RELAXED_ERROR_DIFFUSION,
            vtkErrorDiffusionSampler::METHOD_ERROR_DIFFUSION })
     {
-      vtkNew<vtkErrorDiffusionSampler> sampler;
-      sampler->SetInputData(image);
-      sampler->SetMethod(method);
-      sampler->SetDensityMappingToIdentity();
-      sampler->SetUseNumberOfPoints(false);
-      sampler->SetSeed(seed);
-      sampler->Update();
+      auto sampler = RunSampler(image, method, seed, false);
       std::vector<double> got(expected.size(), 0.0);
       vtkPoints* points = sampler->GetOutput()->GetPoints();
       for (vtkIdType i = 0; points && i < points->GetNumberOfPoints(); ++i)
