@@ -35,7 +35,7 @@ rendering integral when rho(x) = tau(x) / (pi r^2), each particle showing the
 colour of its voxel. With at most one particle per voxel (the sampler's
 points are voxel centres), the probability that a voxel holds a particle is
 g = rho h^3 = -ln(1 - alpha) * h^2 / (pi r^2).
-So the sampler runs with DensityMapping = TransferFunction, its transfer
+So the sampler runs with DensityMapping = "Transfer Function", its transfer
 function the "density" function g0(x) = -ln(1 - alpha(x)) (--density extinction,
 default; --density opacity uses alpha(x) itself, which is what the GUI macro
 does and is within 12 % for alpha < 0.2), and DensityScale s; then
@@ -442,14 +442,14 @@ def main(argv=None):
             radius = h / math.sqrt(math.pi * scale)
             clamped = int(np.count_nonzero(scale * g0_of(values) > 1.0))
             panels = {}
-            for method, name in (("ErrorDiffusion", "ED"), ("WhiteNoise", "WN")):
+            for method, name in (("Error Diffusion", "ED"), ("White Noise", "WN")):
                 acc = None
                 n_total = 0
                 for e in range(args.ensembles):
                     s = sampler_ctor(Input=reader)
                     s.Scalars = ["POINTS", array]
                     s.Method = method
-                    s.DensityMapping = "TransferFunction"
+                    s.DensityMapping = "Transfer Function"
                     s.TransferFunction = density_tf
                     s.UseNumberOfPoints = 0
                     s.DensityScale = scale

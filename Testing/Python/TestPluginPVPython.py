@@ -133,7 +133,7 @@ def run_wavelet():
 
     s = ErrorDiffusionSampler(Input=w)
     check(list(s.Scalars) == ["POINTS", "RTData"], "Scalars defaults to the active scalars: %s" % (s.Scalars,))
-    check(s.DensityMapping == "ScalarRange", "DensityMapping defaults to ScalarRange")
+    check(s.DensityMapping == "Scalar Range", "DensityMapping defaults to Scalar Range")
     check(s.UseNumberOfPoints == 1 and s.NumberOfPoints == 100000 and s.Jitter == 1,
           "a point budget of 100000 and jittered points by default")
     s.UseNumberOfPoints = 0
@@ -179,7 +179,7 @@ def run_wavelet():
     threshold = 150.0
     otf = GetOpacityTransferFunction("RTData")
     otf.Points = [lo, 0.0, 0.5, 0.0, threshold, 0.0, 0.5, 0.0, hi, 0.25, 0.5, 0.0]
-    s.DensityMapping = "TransferFunction"
+    s.DensityMapping = "Transfer Function"
     s.TransferFunction = otf
     s.UseNumberOfPoints = 0
     s.DensityScale = 1.0
@@ -276,7 +276,7 @@ def run_mri(mri, nifti_plugin):
 
         s = ErrorDiffusionSampler(Input=reader)
         check(list(s.Scalars) == ["POINTS", name], "Scalars defaults to %s: %s" % (name, s.Scalars))
-        s.DensityMapping = "ScalarRange"
+        s.DensityMapping = "Scalar Range"
         s.UseNumberOfPoints = 0
         s.DensityScale = scale
         s.UpdatePipeline()
