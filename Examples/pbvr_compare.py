@@ -40,7 +40,7 @@ rendering integral when rho(x) = tau(x) / (pi r^2), each particle showing the
 colour of its voxel. With at most one particle per voxel (the sampler's
 points are voxel centres), the probability that a voxel holds a particle is
 g = rho h^3 = -ln(1 - alpha) * h^2 / (pi r^2).
-So the sampler runs with DensityMapping = TransferFunction, its transfer
+So the sampler runs with DensityMapping = "Transfer Function", its transfer
 function the "density" function g0(x) = -ln(1 - alpha(x)) (--density extinction,
 default; --density opacity uses alpha(x) itself, which is what the GUI macro
 does and is within 12 % for alpha < 0.2), and DensityScale s; then
@@ -105,7 +105,7 @@ from vtkmodules.vtkIOImage import vtkPNGReader, vtkPNGWriter
 
 DEFAULT_VOLUME = "/usr/share/mricron/templates/ch2bet.nii.gz"
 # The sampler's methods compared: (Method, short name).
-METHODS = (("RelaxedErrorDiffusion", "RED"), ("ErrorDiffusion", "ED"), ("WhiteNoise", "WN"))
+METHODS = (("Relaxed Error Diffusion", "RED"), ("Error Diffusion", "ED"), ("White Noise", "WN"))
 LONG_NAMES = {"RED": "relaxed error diffusion (default)", "ED": "error diffusion (paper)",
               "WN": "white noise (hit and miss)"}
 HERE = os.path.dirname(os.path.abspath(__file__))
@@ -457,7 +457,7 @@ def main(argv=None):
                     s = sampler_ctor(Input=reader)
                     s.Scalars = ["POINTS", array]
                     s.Method = method
-                    s.DensityMapping = "TransferFunction"
+                    s.DensityMapping = "Transfer Function"
                     s.TransferFunction = density_tf
                     s.UseNumberOfPoints = 0
                     s.DensityScale = scale

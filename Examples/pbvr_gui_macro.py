@@ -13,7 +13,7 @@ Use in the ParaView GUI:
 3. Open a volume (image data), colour it by the array you want (e.g. the Volume
    representation) and edit its colour and opacity transfer functions.
 4. Select the volume in the Pipeline Browser and run the macro. It adds an
-   "Error Diffusion Sampler" (Density Mapping = TransferFunction, the array's
+   "Error Diffusion Sampler" (Density Mapping = Transfer Function, the array's
    opacity function) shown as Point Gaussian particles in the active render
    view, and hides the volume there.
 
@@ -34,7 +34,7 @@ import math
 import paraview.simple as pvs
 
 TARGET_PARTICLES = 100000
-METHOD = "ErrorDiffusion"  # or "WhiteNoise" (hit-and-miss, for comparison)
+METHOD = "Error Diffusion"  # or "White Noise" (hit-and-miss, for comparison)
 SEED = 0
 SHADER = "Plain circle"  # opaque discs; "Sphere" adds shading
 JITTER = True  # move each particle uniformly within its voxel (no lattice columns)
@@ -94,7 +94,7 @@ def setup_pbvr(source=None, view=None, target=TARGET_PARTICLES, method=METHOD, s
     sampler.Scalars = ["POINTS", array]
     sampler.Method = method
     sampler.Seed = seed
-    sampler.DensityMapping = "TransferFunction"
+    sampler.DensityMapping = "Transfer Function"
     sampler.TransferFunction = otf
     sampler.UseNumberOfPoints = 0
     # Expected count at DensityScale 1 = sum of the opacities (few voxels reach 1).

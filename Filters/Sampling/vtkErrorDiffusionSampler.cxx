@@ -256,6 +256,12 @@ int vtkErrorDiffusionSampler::RequestInformation(
   vtkInformation* inInfo = inputVector[0]->GetInformationObject(0);
   vtkInformation* maskInfo = outputVector->GetInformationObject(1);
   const auto wholeKey = vtkStreamingDemandDrivenPipeline::WHOLE_EXTENT();
+  // A new pass of the pipeline (a run's steps never call for one): a run left
+  // unfinished, its input having failed between steps, is dropped, so that
+  // the plan is made again for this input.
+  this->Internals->Running = false;
+  this->Internals->Points = nullptr;
+  this->Internals->Mask = nullptr;
   const int empty[6] = { 0, -1, 0, -1, 0, -1 };
   if (this->GenerateMask && inInfo->Has(wholeKey))
   {
@@ -305,9 +311,15 @@ int vtkErrorDiffusionSampler::RequestUpdateExtent(
   vtkInformation* inInfo = inputVector[0]->GetInformationObject(0);
   vtkInternals& run = *this->Internals;
   const auto sddp = vtkStreamingDemandDrivenPipeline::UPDATE_EXTENT();
+  int whole[6] = { 0, -1, 0, -1, 0, -1 };
+  inInfo->Get(vtkStreamingDemandDrivenPipeline::WHOLE_EXTENT(), whole);
+  if (run.Running && !std::equal(whole, whole + 6, run.Whole))
+  {
+    run.Running = false; // the plan of another input
+  }
   if (!run.Running)
   {
-    inInfo->Get(vtkStreamingDemandDrivenPipeline::WHOLE_EXTENT(), run.Whole);
+    std::copy(whole, whole + 6, run.Whole);
     const int piece = outInfo->Has(vtkStreamingDemandDrivenPipeline::UPDATE_PIECE_NUMBER())
       ? outInfo->Get(vtkStreamingDemandDrivenPipeline::UPDATE_PIECE_NUMBER())
       : 0;
@@ -444,13 +456,17 @@ vtkDataArray* vtkErrorDiffusionSampler::GetDensityArray(
                                         << " voxels.");
     return nullptr;
   }
-  if (this->Component >= array->GetNumberOfComponents())
+  // Component == the number of components is the magnitude: ParaView's
+  // component selector (vtkSMNumberOfComponentsDomain) gives "Magnitude" that value.
+  const int components = array->GetNumberOfComponents();
+  if (this->Component > components)
   {
     vtkErrorMacro("Component " << this->Component << " is out of range: the array '" << name
-                               << "' has " << array->GetNumberOfComponents()
-                               << " component(s).");
+                               << "' has " << components << " component(s) (" << components
+                               << " or -1: the magnitude).");
     return nullptr;
   }
+  this->Internals->Density.SetComponent(this->Component == components ? -1 : this->Component);
   return array;
 }
 

@@ -15,7 +15,8 @@
  * Input: vtkImageData with 1D, 2D or 3D extent (a 2D image is sampled as one
  * layer). The density comes from the point-data array chosen with
  * SetInputArrayToProcess(0, ...) (default: the active scalars), any numeric
- * type; Component selects the component (-1: the magnitude). The value
+ * type; Component selects the component (-1 or the number of components: the
+ * magnitude). The value
  * becomes a density by DensityMapping (see vtkSamplingDensity for the exact
  * definitions):
  * - DENSITY_IDENTITY: the value is the density;
@@ -158,7 +159,8 @@ public:
 
   ///@{
   /**
-   * Component of the density array to use; -1 uses the magnitude. Default 0.
+   * Component of the density array to use; -1, or the number of components
+   * (ParaView's "Magnitude" entry), uses the magnitude. Default 0.
    */
   vtkSetClampMacro(Component, int, -1, VTK_INT_MAX);
   vtkGetMacro(Component, int);

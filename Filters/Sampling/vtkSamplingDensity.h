@@ -48,6 +48,8 @@ public:
   void SetMapping(int mode, int component, vtkPiecewiseFunction* function = nullptr);
   int GetMapping() const { return this->Mode; }
   int GetComponent() const { return this->Component; }
+  /// The component alone (>= 0, or -1 for the magnitude), the rest kept.
+  void SetComponent(int component) { this->Component = component; }
 
   /// Whether the values must be counted before the densities are known:
   /// for the finite range (SCALAR_RANGE without a set range) or a budget.

@@ -31,6 +31,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <sstream>
 #include <string>
 #include <utility>
@@ -162,18 +163,13 @@ void ForEachOwned(vtkImageData* image, bool cells, const int wholePoints[6], Vis
   }
 }
 
-// Rule 3's grid: GridDimensions points over finite bounds.
-void CheckBoundsGrid(const int dims[3], const double bounds[6], std::ostringstream& error)
+// Rule 3's grid: GridDimensions (at least 2 each, by its setter) over finite bounds.
+void CheckBoundsGrid(const double bounds[6], std::ostringstream& error)
 {
   for (int a = 0; a < 3 && error.tellp() == 0; ++a)
   {
-    if (dims[a] < 2)
-    {
-      error << "GridDimensions must be at least 2 on every axis, not " << dims[0] << " " << dims[1]
-            << " " << dims[2] << ".";
-    }
-    else if (!(std::isfinite(bounds[2 * a]) && std::isfinite(bounds[2 * a + 1]) &&
-               bounds[2 * a] <= bounds[2 * a + 1]))
+    if (!(std::isfinite(bounds[2 * a]) && std::isfinite(bounds[2 * a + 1]) &&
+          bounds[2 * a] <= bounds[2 * a + 1]))
     {
       error << "Invalid grid bounds on axis " << a << ": [" << bounds[2 * a] << ", "
             << bounds[2 * a + 1] << "].";
@@ -353,6 +349,27 @@ vtkSmartPointer<vtkDoubleArray> MakeColumn(const char* name, const std::vector<d
   return column;
 }
 
+// RadialPower at the shell nearest the principal frequency f_g, NaN elsewhere:
+// a chart draws it as one marker on the power curve.
+std::vector<double> MarkerColumn(const vtkBlueNoiseSpectrumKernel::Result& result)
+{
+  std::vector<double> marker(result.Frequency.size(), std::numeric_limits<double>::quiet_NaN());
+  if (!marker.empty() && std::isfinite(result.PrincipalFrequency))
+  {
+    std::size_t nearest = 0;
+    for (std::size_t i = 1; i < marker.size(); ++i)
+    {
+      if (std::abs(result.Frequency[i] - result.PrincipalFrequency) <
+        std::abs(result.Frequency[nearest] - result.PrincipalFrequency))
+      {
+        nearest = i;
+      }
+    }
+    marker[nearest] = result.RadialPower[nearest];
+  }
+  return marker;
+}
+
 void FillTable(vtkTable* table, const vtkBlueNoiseSpectrumKernel::Result& result)
 {
   table->AddColumn(MakeColumn("Frequency", result.Frequency));
@@ -367,6 +384,7 @@ void FillTable(vtkTable* table, const vtkBlueNoiseSpectrumKernel::Result& result
   shellCount->SetNumberOfValues(static_cast<vtkIdType>(result.ShellCount.size()));
   std::copy(result.ShellCount.begin(), result.ShellCount.end(), shellCount->GetPointer(0));
   table->AddColumn(shellCount);
+  table->AddColumn(MakeColumn("PrincipalFrequencyMarker", MarkerColumn(result)));
 
   vtkFieldData* fd = table->GetFieldData();
   AddFieldValue(fd, "NumberOfPoints", result.NumberOfPoints);
@@ -411,7 +429,10 @@ void SetSpectrumWholeExtent(vtkInformation* imageInfo, const int dims[3])
   imageInfo->Get(vtkStreamingDemandDrivenPipeline::WHOLE_EXTENT(), announced);
   if (!std::equal(extent, extent + 6, announced))
   {
+    // The request was for the announced extent, which may lie outside this one:
+    // the next request from that port would fail the executive's check.
     imageInfo->Set(vtkStreamingDemandDrivenPipeline::WHOLE_EXTENT(), extent, 6);
+    imageInfo->Set(vtkStreamingDemandDrivenPipeline::UPDATE_EXTENT(), extent, 6);
   }
 }
 
@@ -537,6 +558,18 @@ int vtkBlueNoiseSpectrum::RequestInformation(
 }
 
 //------------------------------------------------------------------------------
+void vtkBlueNoiseSpectrum::SetGridDimensions(int lx, int ly, int lz)
+{
+  // A grid needs two points per axis for a frequency other than 0.
+  const int dims[3] = { std::max(2, lx), std::max(2, ly), std::max(2, lz) };
+  if (!std::equal(dims, dims + 3, this->GridDimensions))
+  {
+    std::copy(dims, dims + 3, this->GridDimensions);
+    this->Modified();
+  }
+}
+
+//------------------------------------------------------------------------------
 void vtkBlueNoiseSpectrum::ShareOutputRequest(
   vtkInformation* request, vtkInformationVector* outputVector)
 {
@@ -603,6 +636,11 @@ int vtkBlueNoiseSpectrum::RequestData(
   table->Initialize();
   image->Initialize();
   this->NumberOfTransformedRealizations = 0;
+  // An aborted input (an empty sampler output) is no error: stop before checking it.
+  if (this->IsAborted())
+  {
+    return 1;
+  }
 
   std::vector<Realization> pieces;
   std::vector<Realization> realizations;
@@ -828,7 +866,7 @@ bool vtkBlueNoiseSpectrum::BuildGrids(std::vector<Realization>& realizations)
   if (needBounds && error.tellp() == 0)
   {
     const double* over = this->UseGridBounds ? this->GridBounds : bounds;
-    CheckBoundsGrid(this->GridDimensions, over, error);
+    CheckBoundsGrid(over, error);
     for (Realization& r : realizations)
     {
       if (r.GridFromBounds)

@@ -37,7 +37,9 @@
  * Output port 0, vtkTable, one row per radial shell 1 .. nmax: `Frequency`
  * (cycles per voxel), `RadialPower`, `Anisotropy`, `AnisotropyDB` (floored at
  * -300 dB), `SRAPS_XY`, `SRAPS_XZ`, `SRAPS_YZ` (vtkDoubleArray) and
- * `ShellCount` (vtkIdTypeArray, full-spectrum sample count). Field data:
+ * `ShellCount` (vtkIdTypeArray, full-spectrum sample count), and
+ * `PrincipalFrequencyMarker`: RadialPower at the shell nearest the principal
+ * frequency f_g, NaN elsewhere (a chart marks f_g with it). Field data:
  * one-tuple vtkDoubleArrays `NumberOfPoints` (mean over realizations),
  * `Density`, `PrincipalFrequency`, `LowFrequencyRatio`, `SymmetryCorrelation`,
  * `Symmetry`, `TargetValue`, and vtkIntArrays `Realisations` (1 tuple) and
@@ -51,9 +53,9 @@
  *
  * Errors (vtkErrorMacro, both outputs empty): no realization, a realization
  * without points or with N = 0 inside the grid, no or a multi-component array,
- * a grid dimension below 2, realizations of different grid shapes, negative or
- * non-finite counts, malformed SamplingGrid field data, a singular direction
- * matrix. A mask with every voxel set (g = 1) has no power off DC: a warning,
+ * an input grid with a dimension below 2, realizations of different grid
+ * shapes, negative or non-finite counts, malformed SamplingGrid field data, a
+ * singular direction matrix. A mask with every voxel set (g = 1) has no power off DC: a warning,
  * and L = 0, anisotropy 0, S = 1 by convention.
  *
  * Pipeline: the whole spectrum needs every realization in full, so the filter
@@ -121,10 +123,14 @@ public:
   ///@{
   /**
    * Number of grid points (Lx, Ly, Lz) of the analysis grid built over the
-   * bounds when the input carries no grid (or UseInputGrid is off). Each must
-   * be at least 2. Default 64 64 64.
+   * bounds when the input carries no grid (or UseInputGrid is off). Each is
+   * clamped to at least 2 (as ParaView's domain does). Default 64 64 64.
    */
-  vtkSetVector3Macro(GridDimensions, int);
+  virtual void SetGridDimensions(int lx, int ly, int lz);
+  void SetGridDimensions(const int dims[3])
+  {
+    this->SetGridDimensions(dims[0], dims[1], dims[2]);
+  }
   vtkGetVector3Macro(GridDimensions, int);
   ///@}
 

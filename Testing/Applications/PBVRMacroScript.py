@@ -66,7 +66,7 @@ def main():
     sampler, rep = pbvr_gui_macro.setup_pbvr(target=args.count)
     check(sampler.GetXMLName() == "ErrorDiffusionSampler", "the macro made an ErrorDiffusionSampler")
     check(sampler.Input.GetXMLName() == reader.GetXMLName(), "on the active source")
-    check(sampler.DensityMapping == "TransferFunction", "DensityMapping TransferFunction")
+    check(sampler.DensityMapping == "Transfer Function", "DensityMapping Transfer Function")
     check(sampler.TransferFunction.SMProxy is otf.SMProxy, "bound to the array's opacity function")
     check(list(sampler.Scalars)[-1] == array, "Scalars = %s" % list(sampler.Scalars))
     check(rep.Representation == "Point Gaussian", "Point Gaussian representation (%s)" % rep.Representation)

@@ -19,6 +19,7 @@
 
 #include <cmath>
 #include <limits>
+#include <string>
 
 using namespace spectrum_test;
 using bluenoise_test::MessageObserver;
@@ -313,7 +314,9 @@ void FilterSinglePointAndFullMask()
   bool finite = true;
   for (vtkIdType c = 0; c < table->GetNumberOfColumns(); ++c)
   {
-    vtkDataArray* column = vtkDataArray::SafeDownCast(table->GetColumn(c));
+    // The marker column is NaN but at the principal frequency, by design.
+    const bool marker = std::string(table->GetColumnName(c)) == "PrincipalFrequencyMarker";
+    vtkDataArray* column = marker ? nullptr : vtkDataArray::SafeDownCast(table->GetColumn(c));
     for (vtkIdType i = 0; column && i < column->GetNumberOfTuples(); ++i)
     {
       finite = finite && std::isfinite(column->GetComponent(i, 0));
@@ -335,6 +338,27 @@ void FilterSinglePointAndFullMask()
       "full mask through the filter: L = " + Str(r.LowFrequencyRatio) + ", S = " + Str(r.Symmetry));
   }
 }
+
+// GridDimensions below 2 are clamped to 2 (the XML's domain), and the filter runs.
+void GridDimensionsClamp()
+{
+  vtkNew<vtkBlueNoiseSpectrum> filter;
+  filter->SetGridDimensions(1, -4, 5);
+  const int* dims = filter->GetGridDimensions();
+  Check(dims[0] == 2 && dims[1] == 2 && dims[2] == 5,
+    "SetGridDimensions(1, -4, 5) gives " + Str(dims[0]) + " " + Str(dims[1]) + " " + Str(dims[2]));
+  const vtkMTimeType before = filter->GetMTime();
+  filter->SetGridDimensions(0, 2, 5);
+  Check(filter->GetMTime() == before, "the same clamped dimensions do not modify the filter");
+  vtkNew<vtkPolyData> two;
+  vtkNew<vtkPoints> points;
+  points->InsertNextPoint(0.1, 0.2, 0.3);
+  points->InsertNextPoint(0.7, 0.8, 0.9);
+  two->SetPoints(points);
+  filter->SetInputData(two);
+  filter->Update();
+  Check(filter->GetOutput()->GetNumberOfRows() > 0, "the clamped grid gives a spectrum");
+}
 }
 
 int main()
@@ -345,5 +369,6 @@ int main()
   FullMask(rng);
   FilterErrors();
   FilterSinglePointAndFullMask();
+  GridDimensionsClamp();
   return bluenoise_test::Summary("TestBlueNoiseSpectrumEdgeCases");
 }

@@ -178,6 +178,16 @@ int main()
         return std::min(1.0, 1e-5 * m);
       },
       "magnitude");
+    // The number of components is the magnitude too (ParaView's "Magnitude" entry).
+    auto entry = Sample(image, [](vtkErrorDiffusionSampler* s) {
+      s->SetInputArrayToProcess(0, 0, 0, vtkDataObject::FIELD_ASSOCIATION_POINTS, "triple");
+      s->SetComponent(3);
+      s->SetDensityScale(1e-5);
+    });
+    Check(entry->GetNumberOfPoints() == mag->GetNumberOfPoints() &&
+        entry->GetNumberOfPoints() > 0,
+      "component 3 of 3 is the magnitude: " + Str(entry->GetNumberOfPoints()) + " points, " +
+        Str(mag->GetNumberOfPoints()) + " with -1");
   }
   // NaN is density 0.
   {

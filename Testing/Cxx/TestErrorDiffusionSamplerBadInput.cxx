@@ -81,7 +81,7 @@ int main()
   empty->GetPointData()->SetScalars(nothing);
   Expect(empty, none, "empty extent", "empty extent");
 
-  Expect(good, [](vtkErrorDiffusionSampler* s) { s->SetComponent(1); }, "out of range",
+  Expect(good, [](vtkErrorDiffusionSampler* s) { s->SetComponent(2); }, "out of range",
     "component out of range");
   // Out-of-range values are clamped by the setters (as ParaView's domains
   // do); what no clamp can fix is an error.

@@ -7,8 +7,9 @@
 
 Starts `xvfb-run -a paraview --dr --plugin-search-paths=DIR --plugins=BlueNoiseSampling
 --script=TestPluginGUIScript.py --exit`, then checks what the script recorded
-(plugin loaded, ShowInMenu category Sampling, points shown) and that the
-screenshots exist and are not blank. Exits 125 (skip) only when there is no
+(plugin loaded, ShowInMenu category Sampling, points shown, one execution of each
+filter, the spectrum view), that the GUI's output holds no warning or error line,
+and that the screenshots exist and are not blank. Exits 125 (skip) only when there is no
 display and no xvfb-run; 1 on any failure.
 """
 import argparse
@@ -43,6 +44,20 @@ def image_stats(path):
     background = colours[np.argmax(counts)]
     differs = np.any(np.abs(pixels - background) > 8, axis=1)
     return w, h, float(differs.mean()), len(colours), float(counts.max()) / len(pixels)
+
+
+# Lines of the paraview output that are not the GUI's: Xvfb's own start-up notes.
+HARMLESS = ("_XSERVTransmkdir", "xvfb-run:", "Process started")
+
+
+def is_complaint(line):
+    """A warning or error of ParaView, VTK, Qt or the plugin."""
+    text = line.strip()
+    if not text or any(h in text for h in HARMLESS):
+        return False
+    lowered = text.lower()
+    return any(word in lowered for word in ("warn", "error", "err|", "could not", "cannot", "failed",
+                                            "traceback"))
 
 
 def main():
@@ -93,6 +108,11 @@ def main():
         returncode = None
     output = output.decode(errors="replace")
     print("---- paraview output ----\n" + output.rstrip() + "\n-------------------------", flush=True)
+    # The session's log: no warning or error anywhere (a GUI user sees them as popups or in
+    # the Output Messages window, which echoes them on stderr).
+    bad = [line for line in output.splitlines() if is_complaint(line)]
+    check(not bad, "no warning or error in the GUI's output (%d line(s)%s)"
+          % (len(bad), "".join("\n      " + line for line in bad[:10])))
     check(returncode == 0, "paraview exited with 0 (got %r%s)"
           % (returncode, ", timed out after %gs" % args.timeout if returncode is None else ""))
 
@@ -120,15 +140,34 @@ def main():
     if result.get("finished"):
         check(result["chart_x_array"] == "Frequency",
               "the spectrum chart plots against Frequency (%r)" % result["chart_x_array"])
-        check(sorted(result["chart_visible_series"]) == ["Anisotropy", "RadialPower"],
-              "the chart shows RadialPower and Anisotropy (%r)" % result["chart_visible_series"])
+        check(sorted(result["chart_visible_series"]) == ["AnisotropyDB", "PrincipalFrequencyMarker",
+                                                          "RadialPower"],
+              "the chart shows RadialPower, AnisotropyDB and the f_g marker (%r)"
+              % result["chart_visible_series"])
+        check(result["chart_left_log"] == 1 and all(result["chart_titles"]),
+              "the chart's power axis is logarithmic and its axes titled (%r, %r)"
+              % (result["chart_left_log"], result["chart_titles"]))
+        # Apply shows the samples in the render view and the spectrum table in a view of its
+        # own; neither the mask nor the 3D spectrum is shown.
+        check(result["sampler_views"] == ["RenderView", None],
+              "Apply of the sampler shows %r (RenderView, not the mask)" % result["sampler_views"])
+        check(result["spectrum_views"] == ["BlueNoiseSpectrumView", None],
+              "Apply of the spectrum shows %r (its chart view, not the 3D spectrum)"
+              % result["spectrum_views"])
+        check(result["executions_after_samples"] == {"sampler": 1, "spectrum": 0},
+              "showing the samples executed %r" % result["executions_after_samples"])
+        check(result["executions"] == {"sampler": 1, "spectrum": 1},
+              "samples, then spectrum, then a display change: executions %r (1 each)"
+              % result["executions"])
 
-    for key, what in (("screenshot", "render view"), ("chart_screenshot", "spectrum chart")):
+    for key, what, size in (("screenshot", "render view", (640, 480)),
+                            ("chart_screenshot", "spectrum chart", (640, 480)),
+                            ("layout_screenshot", "render view and spectrum side by side", (1280, 480))):
         path = result.get(key)
         if not check(path is not None and os.path.exists(path), "%s screenshot saved (%s)" % (what, path)):
             continue
         w, h, fraction, colours, background = image_stats(path)
-        check((w, h) == (640, 480), "%s screenshot is 640x480 (%dx%d)" % (what, w, h))
+        check((w, h) == size, "%s screenshot is %dx%d (%dx%d)" % (what, size[0], size[1], w, h))
         check(fraction > 0.005 and colours > 16,
               "%s screenshot is not blank (%.2f%% of pixels unlike the background, %d colours)"
               % (what, 100 * fraction, colours))

@@ -3,9 +3,9 @@
 """Runs inside the ParaView GUI (paraview --script=THIS --exit), see TestPluginGUI.py.
 
 The plugin is loaded by the GUI itself (--plugins); this script does what a user
-does after Filters > Sampling > Error Diffusion Sampler > Apply: it shows the
-sampler's points in the render view and the spectrum in a line chart, and saves
-screenshots. ParaView exits 0 even when a --script raises, so the outcome goes
+does after Filters > Sampling > Error Diffusion Sampler > Apply: it shows every
+output port of the sampler and then of the spectrum in its preferred view as Apply
+does, counts the filters' executions (StartEvent), and saves screenshots. ParaView exits 0 even when a --script raises, so the outcome goes
 to a JSON file ($BLUENOISE_GUI_OUTPUT/result.json) that the driver checks.
 """
 import json
@@ -39,22 +39,44 @@ try:
     result["categories"] = categories
     save()
 
-    wavelet = Wavelet()
+    counts = {"sampler": 0, "spectrum": 0}
+
+    def counter(key):
+        def on_start(obj, event):
+            counts[key] += 1
+        return on_start
+
+    def show_as_apply_does(proxy, view):
+        """pqApplyBehavior::showData: every output port in its preferred view."""
+        controller = servermanager.vtkSMParaViewPipelineControllerWithRendering()
+        layout = GetLayout(view)
+        shown = []
+        for port in range(proxy.GetNumberOfOutputPorts()):
+            v = controller.ShowInPreferredView(proxy.SMProxy, port, view.SMProxy)
+            if v is not None and v is not view.SMProxy:
+                controller.AssignViewToLayout(v, layout.SMProxy, 0)
+            shown.append(v.GetXMLName() if v is not None else None)
+        return shown
+
+    wavelet = Wavelet(WholeExtent=[-40, 40, -40, 40, -40, 40])
+    view = GetActiveViewOrCreate("RenderView")
+    Show(wavelet, view)
     sampler = ErrorDiffusionSampler(Input=wavelet)
-    sampler.UseNumberOfPoints = 0
-    sampler.DensityScale = 0.3
-    sampler.UpdatePipeline()
+    sampler.NumberOfPoints = 20000
+    sampler.GetClientSideObject().AddObserver("StartEvent", counter("sampler"))
+    result["sampler_views"] = show_as_apply_does(sampler, view)
     result["points"] = sampler.GetDataInformation().GetNumberOfPoints()
+    result["executions_after_samples"] = dict(counts)
     save()
 
     # The render view: what Apply shows.
     try:
-        view = GetActiveViewOrCreate("RenderView")
-        display = Show(sampler, view)
+        display = GetDisplayProperties(sampler, view)
         result["representation"] = display.GetXMLName()
         result["representation_type"] = display.GetProperty("Representation").GetData()
         ColorBy(display, ("POINTS", "RTData"))
-        display.PointSize = 3.0
+        display.PointSize = 2.0
+        Hide(wavelet, view)
         view.OrientationAxesVisibility = 0
         view.ResetCamera()
         Render(view)
@@ -65,22 +87,33 @@ try:
         result["error"] = traceback.format_exc()
     save()
 
-    # The spectrum in a line chart, in a layout of its own.
+    # The spectrum, as Apply shows it: a view of its own next to the render view.
     spectrum = BlueNoiseSpectrum(Input=sampler)
-    chart = CreateView("XYChartView")
-    # A view outside any layout has no window yet: its screenshot would be garbage.
-    AssignViewToLayout(view=chart, layout=CreateLayout("Spectrum"))
-    chart_display = Show(spectrum, chart)
+    spectrum.GetClientSideObject().AddObserver("StartEvent", counter("spectrum"))
+    result["spectrum_views"] = show_as_apply_does(spectrum, view)
+    chart = [v for v in GetViews() if v.GetXMLName() == "BlueNoiseSpectrumView"][0]
+    chart_display = GetDisplayProperties(spectrum, chart)
     result["chart_representation"] = chart_display.GetXMLName()
     result["chart_x_array"] = chart_display.XArrayName if not chart_display.UseIndexForXAxis else ""
     result["chart_visible_series"] = [
         name for name, visible in zip(chart_display.SeriesVisibility[0::2],
                                       chart_display.SeriesVisibility[1::2]) if visible == "1"]
+    result["chart_left_log"] = chart.LeftAxisLogScale
+    result["chart_titles"] = [chart.BottomAxisTitle, chart.LeftAxisTitle, chart.RightAxisTitle]
     Render(chart)
     result["spectrum_rows"] = spectrum.GetDataInformation().GetNumberOfRows()
+    # A display change executes nothing.
+    display.PointSize = 3.0
+    Render(view)
+    Render(chart)
+    result["executions"] = dict(counts)
     chart_shot = os.path.join(OUT, "spectrum.png")
     SaveScreenshot(chart_shot, chart, ImageResolution=[640, 480])
     result["chart_screenshot"] = chart_shot
+    # Both views side by side, as the README shows them.
+    layout_shot = os.path.join(OUT, "paraview-gui.png")
+    SaveScreenshot(layout_shot, GetLayout(view), ImageResolution=[1280, 480])
+    result["layout_screenshot"] = layout_shot
     result["finished"] = True
 except Exception:
     result["error"] = result.get("error", "") + traceback.format_exc()

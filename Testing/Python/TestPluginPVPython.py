@@ -8,8 +8,10 @@
 
 wavelet: ErrorDiffusionSampler on Wavelet() (counts, arrays, field data, mask
 port), BlueNoiseSpectrum on it (table columns and metrics), the
-TransferFunction mapping with an opacity function, and the Scalars default
-(active scalars).
+Transfer Function mapping with an opacity function, the Scalars default
+(active scalars); executions (StartEvent) per UpdatePipeline, per Apply-like
+show of every port and per display change; the spectrum view and chart series;
+Component "Magnitude"; an abort from a progress observer.
 mri: the sampler and the spectrum on the MRI volume read by ParaView's NIfTI
 reader. Exits 125 (skip) when the MRI file is absent.
 
@@ -22,6 +24,7 @@ import os
 import shutil
 import sys
 import tempfile
+import time
 
 import numpy as np
 
@@ -133,7 +136,7 @@ def run_wavelet():
 
     s = ErrorDiffusionSampler(Input=w)
     check(list(s.Scalars) == ["POINTS", "RTData"], "Scalars defaults to the active scalars: %s" % (s.Scalars,))
-    check(s.DensityMapping == "ScalarRange", "DensityMapping defaults to ScalarRange")
+    check(s.DensityMapping == "Scalar Range", "DensityMapping defaults to Scalar Range")
     check(s.UseNumberOfPoints == 1 and s.NumberOfPoints == 100000 and s.Jitter == 1,
           "a point budget of 100000 and jittered points by default")
     s.UseNumberOfPoints = 0
@@ -179,7 +182,7 @@ def run_wavelet():
     threshold = 150.0
     otf = GetOpacityTransferFunction("RTData")
     otf.Points = [lo, 0.0, 0.5, 0.0, threshold, 0.0, 0.5, 0.0, hi, 0.25, 0.5, 0.0]
-    s.DensityMapping = "TransferFunction"
+    s.DensityMapping = "Transfer Function"
     s.TransferFunction = otf
     s.UseNumberOfPoints = 0
     s.DensityScale = 1.0
@@ -226,6 +229,171 @@ def run_wavelet():
               "no explicit Scalars: same points as Scalars=Inverted (the active scalars)")
         check(unset_points.shape != by_rt_points.shape or not np.array_equal(unset_points, by_rt_points),
               "... and not those of RTData")
+
+
+# ---------------------------------------------------------------------------
+class Counter:
+    """StartEvent count of the VTK object behind a proxy (builtin session)."""
+
+    def __init__(self, proxy):
+        self.count = 0
+        proxy.GetClientSideObject().AddObserver("StartEvent", self.on_start)
+
+    def on_start(self, obj, event):
+        self.count += 1
+
+
+def show_as_apply_does(proxy, view):
+    """What the GUI's Apply does (pqApplyBehavior::showData): every output port in its
+    preferred view; returns the views made or used per port."""
+    controller = servermanager.vtkSMParaViewPipelineControllerWithRendering()
+    views = []
+    for port in range(proxy.GetNumberOfOutputPorts()):
+        views.append(controller.ShowInPreferredView(proxy.SMProxy, port, view.SMProxy if view else None))
+    return views
+
+
+def run_executions():
+    """One execution per UpdatePipeline and per Apply, whatever ports are shown; a
+    display change executes nothing; the spectrum chart shows its series."""
+    w = Wavelet(WholeExtent=[-24, 23, -24, 23, -24, 23])
+    s = ErrorDiffusionSampler(Input=w, NumberOfPoints=8000)
+    sampler = Counter(s)
+    s.UpdatePipeline()
+    check(sampler.count == 1, "UpdatePipeline executes the sampler once (%d)" % sampler.count)
+
+    view = CreateView("RenderView")
+    views = show_as_apply_does(s, view)
+    display = GetDisplayProperties(s, view)
+    Render(view)
+    check(sampler.count == 1, "showing the samples as Apply does executes nothing more (%d)" % sampler.count)
+    check(views[0] is not None and views[1] is None,
+          "Apply shows the samples and not the mask (%s)" % [v.GetXMLName() if v else None for v in views])
+    check(display.Representation == "Points", "samples shown as Points (%s)" % display.Representation)
+
+    sp = BlueNoiseSpectrum(Input=s)
+    spectrum = Counter(sp)
+    views = show_as_apply_does(sp, view)
+    for v in views:
+        if v is not None:
+            Render(servermanager._getPyProxy(v))
+    check(sampler.count == 1 and spectrum.count == 1,
+          "showing the spectrum as Apply does: sampler %d, spectrum %d execution(s) (1, 1)"
+          % (sampler.count, spectrum.count))
+    chart_view = views[0]
+    check(chart_view is not None and chart_view.GetXMLName() == "BlueNoiseSpectrumView" and views[1] is None,
+          "Apply shows the table in a Blue Noise Spectrum View, not the 3D spectrum (%s)"
+          % [v.GetXMLName() if v else None for v in views])
+    if chart_view is not None:
+        chart = servermanager._getPyProxy(chart_view)
+        check(chart.LeftAxisLogScale == 1 and chart.LeftAxisTitle == "Radial power"
+              and chart.RightAxisTitle == "Anisotropy (dB)"
+              and chart.BottomAxisTitle == "Frequency (cycles per voxel)",
+              "spectrum view: log power axis, titled axes (%s, %r, %r, %r)"
+              % (chart.LeftAxisLogScale, chart.LeftAxisTitle, chart.RightAxisTitle, chart.BottomAxisTitle))
+        rep = GetDisplayProperties(sp, chart)
+        corners = dict(zip(rep.SeriesPlotCorner[0::2], rep.SeriesPlotCorner[1::2]))
+        markers = dict(zip(rep.SeriesMarkerStyle[0::2], rep.SeriesMarkerStyle[1::2]))
+        check(corners.get("AnisotropyDB") == "1" and corners.get("RadialPower") == "0",
+              "anisotropy on the right axis, power on the left (%s)" % corners)
+        check(markers.get("PrincipalFrequencyMarker") not in (None, "0"),
+              "f_g drawn as a marker (%s)" % markers)
+
+    # A display-only change executes nothing.
+    display.PointSize = 4
+    display.Opacity = 0.5
+    Render(view)
+    check(sampler.count == 1 and spectrum.count == 1,
+          "a display change executes nothing (sampler %d, spectrum %d)" % (sampler.count, spectrum.count))
+
+    # Shown from Python into a plain line chart view: the series are there.
+    line = CreateView("XYChartView")
+    line_display = Show(sp, line)
+    Render(line)
+    visible = [n for n, v in zip(line_display.SeriesVisibility[0::2], line_display.SeriesVisibility[1::2])
+               if v == "1"]
+    check("RadialPower" in visible and "AnisotropyDB" in visible and not line_display.UseIndexForXAxis
+          and line_display.XArrayName == "Frequency",
+          "Show(spectrum, CreateView('XYChartView')) shows RadialPower and AnisotropyDB against "
+          "Frequency (%s)" % visible)
+    table = points_of(sp)
+    marker = vtk_to_numpy(table.GetColumnByName("PrincipalFrequencyMarker"))
+    freq = vtk_to_numpy(table.GetColumnByName("Frequency"))
+    power = vtk_to_numpy(table.GetColumnByName("RadialPower"))
+    fg = field(table, "PrincipalFrequency")
+    at = np.flatnonzero(np.isfinite(marker))
+    check(len(at) == 1 and at[0] == np.argmin(np.abs(freq - fg)) and marker[at[0]] == power[at[0]],
+          "PrincipalFrequencyMarker: RadialPower at the shell nearest f_g = %s only (rows %s)" % (fg, at))
+    check(sampler.count == 1 and spectrum.count == 1,
+          "a second view of the spectrum executes nothing (sampler %d, spectrum %d)"
+          % (sampler.count, spectrum.count))
+    for v in (line, chart_view and servermanager._getPyProxy(chart_view), view):
+        if v is not None:
+            Delete(v)
+
+
+def run_component():
+    """Component "Magnitude" (ParaView's component selector) samples by the vector's magnitude."""
+    w = Wavelet(WholeExtent=[-16, 16, -16, 16, -16, 16])
+    w.UpdatePipeline()
+    g = Gradient(Input=w, ScalarArray=["POINTS", "RTData"])
+    g.UpdatePipeline()
+    name = [n for n in g.PointData.keys() if n != "RTData"][0]
+    vectors = vtk_to_numpy(points_of(g).GetPointData().GetArray(name)).astype(np.float64)
+    magnitude = np.linalg.norm(vectors, axis=1)
+    s = ErrorDiffusionSampler(Input=g, Scalars=["POINTS", name], UseNumberOfPoints=0, DensityScale=0.1)
+    texts = list(s.GetProperty("Component").Available) if hasattr(s.GetProperty("Component"), "Available") else []
+    check(texts[-1:] == ["Magnitude"] and len(texts) == 4, "Component offers %s" % texts)
+    s.Component = "Magnitude"
+    s.UpdatePipeline()
+    lo, hi = magnitude.min(), magnitude.max()
+    expected = np.clip((magnitude - lo) / (hi - lo) * 0.1, 0, 1).sum()
+    check_counts(points_of(s), expected, "Component Magnitude")
+    s.Component = texts[1] if len(texts) > 1 else 1
+    s.UpdatePipeline()
+    y = vectors[:, 1]
+    expected_y = np.clip((y - y.min()) / (y.max() - y.min()) * 0.1, 0, 1).sum()
+    check_counts(points_of(s), expected_y, "Component %s" % s.Component)
+
+
+def run_abort(n):
+    """An observer that aborts on progress ends the run at once: empty output, no error, and
+    the next update works."""
+    w = Wavelet(WholeExtent=[0, n - 1, 0, n - 1, 0, n - 1])
+    s = ErrorDiffusionSampler(Input=w, NumberOfPoints=100000)
+    w.UpdatePipeline()
+    obj = s.GetClientSideObject()
+    messages = []
+    for o in (obj, obj.GetExecutive()):
+        o.AddObserver("ErrorEvent", lambda caller, event: messages.append(event))
+    state = {"aborted_at": None, "last": 0.0}
+
+    def on_progress(caller, event):
+        p = caller.GetProgress()
+        state["last"] = p
+        if state["aborted_at"] is None and p >= 0.2:
+            state["aborted_at"] = time.perf_counter()
+            caller.SetAbortExecuteAndUpdateTime()
+    tag = obj.AddObserver("ProgressEvent", on_progress)
+    s.UpdatePipeline()
+    ended = time.perf_counter()
+    out = points_of(s)
+    check(state["aborted_at"] is not None, "the run reported progress to abort on")
+    if state["aborted_at"] is not None:
+        # A figure, not a pass/fail threshold (timings go to the benchmarks).
+        print("note: %d^3 run ended %.3f s after the abort" % (n, ended - state["aborted_at"]))
+    check(out.GetNumberOfPoints() == 0, "aborted run: empty output (%d points)" % out.GetNumberOfPoints())
+    check(not messages, "aborted run: no error (%s)" % messages)
+    obj.RemoveObserver(tag)
+    obj.SetAbortExecute(0)
+    s.UpdatePipeline()
+    n_after = points_of(s).GetNumberOfPoints()
+    check(abs(n_after - 100000) <= 100, "the next update samples again (%d points)" % n_after)
+    sp = BlueNoiseSpectrum(Input=s)
+    sp.UpdatePipeline()
+    check(not messages, "no error after the abort, spectrum included (%s)" % messages)
+    for proxy in (sp, s, w):
+        Delete(proxy)
 
 
 # ---------------------------------------------------------------------------
@@ -276,7 +444,7 @@ def run_mri(mri, nifti_plugin):
 
         s = ErrorDiffusionSampler(Input=reader)
         check(list(s.Scalars) == ["POINTS", name], "Scalars defaults to %s: %s" % (name, s.Scalars))
-        s.DensityMapping = "ScalarRange"
+        s.DensityMapping = "Scalar Range"
         s.UseNumberOfPoints = 0
         s.DensityScale = scale
         s.UpdatePipeline()
@@ -308,6 +476,7 @@ def main():
     parser.add_argument("--part", choices=("wavelet", "mri"), required=True)
     parser.add_argument("--mri", default="/usr/share/mricron/templates/ch2bet.nii.gz")
     parser.add_argument("--nifti-plugin", default="")
+    parser.add_argument("--abort-size", type=int, default=128, help="voxels per side of the aborted run")
     args = parser.parse_args()
 
     if not check(os.path.exists(args.plugin), "plugin file %s exists" % args.plugin):
@@ -319,6 +488,9 @@ def main():
         finish()
     if args.part == "wavelet":
         run_wavelet()
+        run_executions()
+        run_component()
+        run_abort(args.abort_size)
     else:
         run_mri(args.mri, args.nifti_plugin)
     finish()

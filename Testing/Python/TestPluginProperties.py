@@ -92,8 +92,18 @@ def check_hints(proxies):
                   "(a representation *type* such as Points needs <RepresentationType .../>)"
                   % (name, rep.get("view"), rtype))
         for view in hints.findall("View"):
-            check(pxm.GetPrototypeProxy("views", view.get("type")) is not None,
-                  "%s: <View type=%r/> names a view proxy" % (name, view.get("type")))
+            # "None": the port is not shown on Apply.
+            check(view.get("type") == "None" or pxm.GetPrototypeProxy("views", view.get("type")) is not None,
+                  "%s: <View type=%r/> names a view proxy or None" % (name, view.get("type")))
+        # The pipeline browser loads an icon name as a pixmap unless it is one of its own
+        # (a view type name it has no icon for makes it warn): every port says which.
+        known_icons = ("GEOMETRY", "XYChartView", "SpreadSheetView")
+        for port in range(len(proxies[name].findall("OutputPort"))):
+            icon = [i.get("name") for i in hints.findall("PipelineIcon") if i.get("port", str(port)) == str(port)]
+            views = [v.get("type") for v in hints.findall("View") if v.get("port", str(port)) == str(port)]
+            check((icon and icon[0] in known_icons) or (not icon and all(v in known_icons for v in views)),
+                  "%s: port %d has a pipeline icon the GUI knows (PipelineIcon %s, View %s)"
+                  % (name, port, icon, views))
         # The loaded proxy carries the same menu category.
         sm_hints = servermanager.ProxyManager().SMProxyManager.GetPrototypeProxy("filters", name).GetHints()
         menu = sm_hints.FindNestedElementByName("ShowInMenu") if sm_hints else None
