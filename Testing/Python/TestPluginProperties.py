@@ -430,7 +430,8 @@ def main():
                   "%s: the proxy's properties are those of the XML (%s)" % (name, sorted(set(seen) ^ xml.get(name, set()))))
 
         # 3. ParameterSet Custom reads the file: other points than Paper, same seed.
-        paper = ErrorDiffusionSampler(Input=calc, Scalars=["POINTS", "RTData"], NumberOfPoints=5000)
+        paper = ErrorDiffusionSampler(Input=calc, Scalars=["POINTS", "RTData"], NumberOfPoints=5000,
+                                      ParameterSet="Paper")
         paper.UpdatePipeline()
         custom = ErrorDiffusionSampler(Input=calc, Scalars=["POINTS", "RTData"], NumberOfPoints=5000,
                                        ParameterSet="Custom", ParameterFile=parameter_file)

@@ -276,7 +276,7 @@ check(bad_errors.errors and bad.GetOutput().GetNumberOfPoints() == 0,
 s = vtkErrorDiffusionSampler()
 defaults = {
     "Component": 0, "DensityMapping": 1, "ScalarRange": (0.0, 1.0), "UseCustomScalarRange": False,
-    "UseNumberOfPoints": True, "NumberOfPoints": 100000, "DensityScale": 1.0, "ParameterSet": 0,
+    "UseNumberOfPoints": True, "NumberOfPoints": 100000, "DensityScale": 1.0, "ParameterSet": 3,
     "ParameterFile": "", "ModulationScale": 0.5, "Seed": 0, "WarmUpLayers": 8, "Jitter": False,
     "GenerateMask": False, "OutputPointsPrecision": 0, "UseWorkerThread": True, "NumberOfSlabs": 1,
     "OverlapLayers": 16,
