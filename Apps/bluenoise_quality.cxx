@@ -5,8 +5,8 @@
 // shells 1 .. L/2) of single realisations on an L^3 cube, mean and standard
 // deviation over seeds, for:
 //   Optimized, Paper, Fixed   the paper's error diffusion with that parameter set;
-//   Relaxed (default)         the sampler's default method (relaxed error
-//                             diffusion, Paper parameters);
+//   Relaxed (default)         the sampler's defaults (relaxed error
+//                             diffusion, Optimized parameters);
 //   WhiteNoise, PoissonDisk, SampleElimination
 //                             the sampler's other methods;
 //   ContinuousPoissonDisk     a 3D Poisson-disk set in continuous space
@@ -143,7 +143,9 @@ std::vector<unsigned char> PoissonDiskMask(int L, double target, unsigned seed)
   return mask;
 }
 
-// The sampler with `method` on `image` (its densities as they are), updated.
+// The sampler with `method` on `image` (its densities as they are), updated;
+// the paper's error diffusion with the paper's parameters, the other methods
+// with the default ones.
 vtkSmartPointer<vtkErrorDiffusionSampler> RunSampler(
   vtkImageData* image, int method, int seed, bool mask)
 {
@@ -153,6 +155,10 @@ vtkSmartPointer<vtkErrorDiffusionSampler> RunSampler(
   sampler->SetDensityMappingToIdentity();
   sampler->SetUseNumberOfPoints(false);
   sampler->SetSeed(seed);
+  if (method == vtkErrorDiffusionSampler::METHOD_ERROR_DIFFUSION)
+  {
+    sampler->SetParameterSet(vtkErrorDiffusionSampler::PARAMETERS_PAPER);
+  }
   sampler->SetGenerateMask(mask);
   sampler->Update();
   return sampler;
