@@ -1,0 +1,80 @@
+// SPDX-FileCopyrightText: Copyright (c) 2025-2026 the BlueNoiseSampling contributors
+// SPDX-License-Identifier: BSD-3-Clause
+// Volume loading of the programs: .vti, .nii / .nii.gz (and .hdr/.img),
+// .nrrd / .nhdr, .mhd / .mha.
+//
+// Files are distrusted. Before a reader allocates anything the header is
+// parsed here and checked against the real size of the file(s): dimensions
+// and spacing must be positive and finite, a NIfTI data offset must lie in
+// the file, the data (a MetaImage's or a detached NRRD's data file, a NIfTI
+// body, decompressed when gzipped) must hold at least what the header
+// declares; compressed data is bounded by zlib's largest ratio. So time and
+// memory follow the file's real size, whatever its header claims. Reader
+// errors (VTK's ErrorEvent) and failed allocations (std::bad_alloc) are
+// caught too. Every failure is a message naming the file and the problem.
+//
+// Streaming: the readers of raw MetaImage, raw NRRD and VTI files with raw
+// (uncompressed, appended) data read any sub-extent, so OpenVolume leaves
+// those unread (Volume::Streamable) for a consumer that requests z-slabs
+// (vtkErrorDiffusionSampler::SetNumberOfSlabs). NIfTI, compressed and ASCII
+// files are read whole.
+//
+// World frame: NIfTI volumes are placed in the file's world frame (the sform
+// when its code is set, else the qform; millimetres) through the image's
+// origin, spacing and direction, unless VoxelSpace is asked for; other
+// formats keep the origin and spacing their readers give.
+#ifndef bluenoise_volume_h
+#define bluenoise_volume_h
+
+#include "vtkSmartPointer.h"
+#include "vtkType.h"
+
+#include <string>
+
+class vtkAlgorithm;
+class vtkImageData;
+
+namespace bluenoise
+{
+struct VolumeOptions
+{
+  /// NIfTI: keep voxel space (origin 0, spacing pixdim) instead of the world frame.
+  bool VoxelSpace = false;
+  /// Leave streamable files unread (Volume::Reader) instead of reading them whole.
+  bool AllowStreaming = false;
+};
+
+struct Volume
+{
+  std::string Path;
+  /// "VTI", "NIfTI", "NRRD" or "MetaImage".
+  std::string Format;
+  /// The frame of the image: "sform" or "qform" (a NIfTI world frame, millimetres),
+  /// "voxel" (NIfTI in voxel space: origin 0, spacing pixdim), "file" (the
+  /// origin and spacing the other formats' readers give).
+  std::string Frame;
+  int WholeExtent[6] = { 0, -1, 0, -1, 0, -1 };
+  vtkIdType Voxels = 0;
+  /// Bytes of one voxel over all arrays the header declares (a lower bound).
+  double BytesPerVoxel = 0.0;
+  /// The file's reader reads sub-extents (raw MetaImage, raw NRRD, raw appended VTI).
+  bool StreamableFile = false;
+  /// Streamed: the reader, its information updated and one layer read (Sample); else null.
+  vtkSmartPointer<vtkAlgorithm> Reader;
+  /// Read whole: the volume. Streamed: the first layer, for the array names and types.
+  vtkSmartPointer<vtkImageData> Image;
+  bool Streamable() const { return this->Reader != nullptr; }
+};
+
+/// Checks the file (header against real size) without reading its data.
+bool CheckVolumeFile(const std::string& path, Volume& volume, std::string& error);
+
+/// CheckVolumeFile, then reads (or, streamable and allowed, prepares) the volume.
+bool OpenVolume(
+  const std::string& path, const VolumeOptions& options, Volume& volume, std::string& error);
+
+/// The volume's formats for messages: ".vti, .nii, .nii.gz, ...".
+const char* VolumeSuffixes();
+}
+
+#endif

@@ -1,0 +1,713 @@
+// SPDX-FileCopyrightText: Copyright (c) 2025-2026 the BlueNoiseSampling contributors
+// SPDX-License-Identifier: BSD-3-Clause
+// See bluenoise_volume_headers.h.
+#include "bluenoise_volume_headers.h"
+#include "bluenoise_options.h"
+#include "bluenoise_volume.h"
+
+#include <zlib.h>
+#include "vtksys/SystemTools.hxx"
+
+#include <algorithm>
+#include <cerrno>
+#include <cmath>
+#include <cstdint>
+#include <cstring>
+#include <fstream>
+#include <map>
+#include <sstream>
+#include <sys/stat.h>
+#include <vector>
+
+namespace bluenoise
+{
+namespace headers
+{
+namespace
+{
+// zlib's largest compression ratio (deflate's limit is 1032:1): compressed
+// data of n bytes never holds more than this many times n.
+const double MaximumCompressionRatio = 1032.0;
+
+std::string Lower(const std::string& s)
+{
+  return vtksys::SystemTools::LowerCase(s);
+}
+
+std::string Trim(const std::string& s)
+{
+  const size_t a = s.find_first_not_of(" \t\r\n");
+  const size_t b = s.find_last_not_of(" \t\r\n");
+  return a == std::string::npos ? std::string() : s.substr(a, b - a + 1);
+}
+
+std::vector<std::string> Words(const std::string& s)
+{
+  std::istringstream in(s);
+  std::vector<std::string> words;
+  std::string w;
+  while (in >> w)
+  {
+    words.push_back(w);
+  }
+  return words;
+}
+
+std::string Number(double v)
+{
+  std::ostringstream s;
+  s.precision(15);
+  s << v;
+  return s.str();
+}
+
+// The dimensions, spacing and data size every format declares, checked the
+// same way: positive whole dimensions, finite positive spacing, and the data
+// present in the file (at least `needed` bytes, or for compressed data
+// enough bytes to decompress to them).
+struct Declared
+{
+  double Dimensions[3] = { 1, 1, 1 };
+  double Spacing[3] = { 1, 1, 1 };
+  double Components = 1;
+  double BytesPerValue = 1;
+  double Available = 0;
+  bool Compressed = false;
+};
+
+bool CheckDeclared(const Declared& d, Volume& volume, std::string& error)
+{
+  static const char* const axis[3] = { "x", "y", "z" };
+  double voxels = 1.0;
+  for (int i = 0; i < 3; ++i)
+  {
+    if (!(d.Dimensions[i] >= 1.0) || d.Dimensions[i] != std::floor(d.Dimensions[i]) ||
+      d.Dimensions[i] > 2147483647.0)
+    {
+      error = std::string("dimension ") + axis[i] + " is " + Number(d.Dimensions[i]) +
+        " (must be a whole number >= 1)";
+      return false;
+    }
+    if (!std::isfinite(d.Spacing[i]) || !(d.Spacing[i] > 0.0))
+    {
+      error = std::string("spacing ") + axis[i] + " is " + Number(d.Spacing[i]) +
+        " (must be finite and > 0)";
+      return false;
+    }
+    voxels *= d.Dimensions[i];
+  }
+  if (!(d.Components >= 1.0 && d.Components <= 4096.0))
+  {
+    error = "the number of components is " + Number(d.Components);
+    return false;
+  }
+  const double needed = voxels * d.Components * d.BytesPerValue;
+  const double holds = d.Available * (d.Compressed ? MaximumCompressionRatio : 1.0);
+  if (!(needed <= holds))
+  {
+    error = "the header declares " + Number(d.Dimensions[0]) + " x " + Number(d.Dimensions[1]) +
+      " x " + Number(d.Dimensions[2]) + " voxels (" + Number(needed) + " bytes of data) but " +
+      (d.Compressed ? "the compressed data has only " : "the data has only ") +
+      Number(d.Available) + " bytes";
+    return false;
+  }
+  if (voxels > 9.0e18)
+  {
+    error = "too many voxels: " + Number(voxels);
+    return false;
+  }
+  for (int i = 0; i < 3; ++i)
+  {
+    volume.WholeExtent[2 * i] = 0;
+    volume.WholeExtent[2 * i + 1] = static_cast<int>(d.Dimensions[i]) - 1;
+  }
+  volume.Voxels = static_cast<vtkIdType>(voxels);
+  volume.BytesPerVoxel = d.Components * d.BytesPerValue;
+  return true;
+}
+
+bool DataFileSize(const std::string& path, double offset, double& available, std::string& error)
+{
+  const long long size = FileSize(path);
+  if (size < 0)
+  {
+    error = "cannot open the data file " + path + ": " + std::strerror(errno);
+    return false;
+  }
+  if (offset > static_cast<double>(size))
+  {
+    error = "the data starts at byte " + Number(offset) + ", beyond the end of " + path + " (" +
+      std::to_string(size) + " bytes)";
+    return false;
+  }
+  available = static_cast<double>(size) - offset;
+  return true;
+}
+
+// Bytes a gzip file decompresses to, reading no further than `limit`.
+bool GunzippedSize(const std::string& path, double limit, double& size, std::string& error)
+{
+  gzFile file = gzopen(path.c_str(), "rb");
+  if (!file)
+  {
+    error = std::string("cannot open: ") + std::strerror(errno);
+    return false;
+  }
+  std::vector<char> buffer(1 << 20);
+  size = 0.0;
+  while (size < limit)
+  {
+    const int n = gzread(file, buffer.data(), static_cast<unsigned>(buffer.size()));
+    if (n < 0)
+    {
+      int code = 0;
+      error = std::string("corrupt gzip data: ") + gzerror(file, &code);
+      gzclose(file);
+      return false;
+    }
+    if (n == 0)
+    {
+      break;
+    }
+    size += n;
+  }
+  gzclose(file);
+  return true;
+}
+
+std::string Directory(const std::string& path)
+{
+  const std::string dir = vtksys::SystemTools::GetFilenamePath(path);
+  return dir.empty() ? std::string(".") : dir;
+}
+
+std::string Relative(const std::string& header, const std::string& file)
+{
+  return vtksys::SystemTools::FileIsFullPath(file) ? file : Directory(header) + "/" + file;
+}
+
+// "key<separator>value" lines up to `end` (the first line for which end() is true).
+struct TextHeader
+{
+  std::map<std::string, std::string> Fields;
+  size_t Length = 0; // bytes up to and including the last header line
+};
+}
+
+long long FileSize(const std::string& path)
+{
+  struct stat info;
+  if (stat(path.c_str(), &info) != 0)
+  {
+    return -1;
+  }
+  if (!S_ISREG(info.st_mode))
+  {
+    errno = EISDIR;
+    return -1;
+  }
+  return static_cast<long long>(info.st_size);
+}
+
+bool ReadHead(const std::string& path, size_t limit, bool gzipped, std::string& head, std::string& error)
+{
+  head.assign(limit, '\0');
+  if (gzipped)
+  {
+    gzFile file = gzopen(path.c_str(), "rb");
+    if (!file)
+    {
+      error = std::string("cannot open: ") + std::strerror(errno);
+      return false;
+    }
+    const int n = gzread(file, &head[0], static_cast<unsigned>(limit));
+    gzclose(file);
+    if (n < 0)
+    {
+      error = "corrupt gzip data";
+      return false;
+    }
+    head.resize(static_cast<size_t>(n));
+    return true;
+  }
+  std::ifstream in(path, std::ios::binary);
+  if (!in)
+  {
+    error = std::string("cannot open: ") + std::strerror(errno);
+    return false;
+  }
+  in.read(&head[0], static_cast<std::streamsize>(limit));
+  head.resize(static_cast<size_t>(in.gcount()));
+  return true;
+}
+
+//------------------------------------------------------------------------------
+// NIfTI-1 / NIfTI-2 / Analyze 7.5: the binary header's fields, either byte order.
+namespace
+{
+struct NIfTIHeader
+{
+  double Dim[8] = { 0 };
+  double PixDim[8] = { 0 };
+  double VoxOffset = 0;
+  double BitPix = 0;
+  size_t HeaderSize = 348;
+  bool SingleFile = false;
+};
+
+template <typename T>
+T Field(const std::string& h, size_t at, bool swap)
+{
+  T v;
+  char bytes[sizeof(T)];
+  std::memcpy(bytes, h.data() + at, sizeof(T));
+  if (swap)
+  {
+    std::reverse(bytes, bytes + sizeof(T));
+  }
+  std::memcpy(&v, bytes, sizeof(T));
+  return v;
+}
+
+bool ParseNIfTI(const std::string& h, NIfTIHeader& n, std::string& error)
+{
+  if (h.size() < 348)
+  {
+    error = "the file is shorter than a NIfTI header (" + std::to_string(h.size()) + " bytes)";
+    return false;
+  }
+  const int32_t size = Field<int32_t>(h, 0, false);
+  const bool two = size == 540 || size == 0x1C020000;
+  const bool swap = size == 0x5C010000 || size == 0x1C020000;
+  if (size != 348 && !two && !swap)
+  {
+    error = "not a NIfTI header (sizeof_hdr is " + std::to_string(size) + ")";
+    return false;
+  }
+  if (two && h.size() < 540)
+  {
+    error = "the file is shorter than a NIfTI-2 header";
+    return false;
+  }
+  n.HeaderSize = two ? 540 : 348;
+  for (int i = 0; i < 8; ++i)
+  {
+    n.Dim[i] = two ? static_cast<double>(Field<int64_t>(h, 16 + 8 * i, swap))
+                   : Field<int16_t>(h, 40 + 2 * i, swap);
+    n.PixDim[i] = two ? Field<double>(h, 104 + 8 * i, swap) : Field<float>(h, 76 + 4 * i, swap);
+  }
+  n.BitPix = two ? Field<int16_t>(h, 14, swap) : Field<int16_t>(h, 72, swap);
+  n.VoxOffset = two ? static_cast<double>(Field<int64_t>(h, 168, swap)) : Field<float>(h, 108, swap);
+  n.SingleFile = two ? h.compare(4, 3, "n+2") == 0 : h.compare(344, 3, "n+1") == 0;
+  if (!(n.Dim[0] >= 1 && n.Dim[0] <= 7))
+  {
+    error = "dim[0] (the number of dimensions) is " + Number(n.Dim[0]) + ", not in [1, 7]";
+    return false;
+  }
+  if (!(n.BitPix >= 8) || std::fmod(n.BitPix, 8.0) != 0.0)
+  {
+    error = "bitpix is " + Number(n.BitPix) + " (a multiple of 8 is needed)";
+    return false;
+  }
+  if (!std::isfinite(n.VoxOffset) || n.VoxOffset < (n.SingleFile ? n.HeaderSize : 0))
+  {
+    error = "vox_offset is " + Number(n.VoxOffset);
+    return false;
+  }
+  return true;
+}
+}
+
+bool CheckNIfTI(const std::string& path, Volume& volume, std::string& error)
+{
+  const bool gzipped = Lower(path).size() > 3 && Lower(path).substr(path.size() - 3) == ".gz";
+  std::string head;
+  NIfTIHeader n;
+  if (!ReadHead(path, 540, gzipped, head, error) || !ParseNIfTI(head, n, error))
+  {
+    return false;
+  }
+  Declared d;
+  const int rank = static_cast<int>(n.Dim[0]);
+  for (int i = 0; i < 3; ++i)
+  {
+    d.Dimensions[i] = i < rank ? n.Dim[i + 1] : 1.0;
+    d.Spacing[i] = i < rank ? n.PixDim[i + 1] : 1.0;
+  }
+  // Only the first time point is read; a fifth dimension holds components.
+  d.Components = rank >= 5 ? n.Dim[5] : 1.0;
+  if (rank >= 4 && !(n.Dim[4] >= 1.0))
+  {
+    error = "dimension t is " + Number(n.Dim[4]);
+    return false;
+  }
+  d.BytesPerValue = n.BitPix / 8.0;
+  // The data: in the same file after vox_offset, or in the .img of a .hdr.
+  std::string body = path;
+  if (!n.SingleFile)
+  {
+    const std::string stem = path.substr(0, path.size() - (gzipped ? 7 : 4));
+    body = FileSize(stem + ".img") >= 0 ? stem + ".img" : stem + ".img.gz";
+  }
+  const bool bodyGzipped = Lower(body).substr(body.size() - 3) == ".gz";
+  if (bodyGzipped)
+  {
+    const double compressed = static_cast<double>(std::max(0LL, FileSize(body)));
+    const double needed = n.VoxOffset +
+      d.Dimensions[0] * d.Dimensions[1] * d.Dimensions[2] * d.Components * d.BytesPerValue;
+    // A header claiming more than the compressed bytes can hold fails at once.
+    double size = 0.0;
+    if (needed > compressed * MaximumCompressionRatio + n.VoxOffset)
+    {
+      d.Compressed = true;
+      d.Available = compressed;
+      volume.Format = "NIfTI";
+      return CheckDeclared(d, volume, error);
+    }
+    if (!GunzippedSize(body, needed, size, error))
+    {
+      error = body + ": " + error;
+      return false;
+    }
+    if (n.VoxOffset > size && size > 0.0)
+    {
+      error = "vox_offset " + Number(n.VoxOffset) + " lies beyond the end of the data (" +
+        Number(size) + " bytes decompressed)";
+      return false;
+    }
+    d.Available = std::max(0.0, size - n.VoxOffset);
+  }
+  else if (!DataFileSize(body, n.VoxOffset, d.Available, error))
+  {
+    return false;
+  }
+  volume.Format = "NIfTI";
+  return CheckDeclared(d, volume, error);
+}
+
+//------------------------------------------------------------------------------
+// MetaImage: "Key = Value" lines, ElementDataFile last.
+namespace
+{
+double MetaTypeSize(const std::string& type)
+{
+  static const std::map<std::string, double> sizes = { { "MET_CHAR", 1 }, { "MET_UCHAR", 1 },
+    { "MET_SHORT", 2 }, { "MET_USHORT", 2 }, { "MET_INT", 4 }, { "MET_UINT", 4 },
+    { "MET_LONG", 4 }, { "MET_ULONG", 4 }, { "MET_LONG_LONG", 8 }, { "MET_ULONG_LONG", 8 },
+    { "MET_FLOAT", 4 }, { "MET_DOUBLE", 8 } };
+  const auto it = sizes.find(type);
+  return it == sizes.end() ? 0.0 : it->second;
+}
+
+bool ParseTextHeader(const std::string& head, char separator, const std::string& lastKey,
+  bool endAtBlankLine, TextHeader& header)
+{
+  size_t at = 0;
+  while (at < head.size())
+  {
+    size_t end = head.find('\n', at);
+    if (end == std::string::npos)
+    {
+      return false;
+    }
+    const std::string line = Trim(head.substr(at, end - at));
+    header.Length = end + 1;
+    at = end + 1;
+    if (line.empty() && endAtBlankLine)
+    {
+      return true;
+    }
+    const size_t split = line.find(separator);
+    if (line.empty() || line[0] == '#' || split == std::string::npos)
+    {
+      continue;
+    }
+    const std::string key = Lower(Trim(line.substr(0, split)));
+    std::string value = Trim(line.substr(split + 1));
+    if (!value.empty() && value[0] == '=')
+    {
+      continue; // a NRRD key/value pair (key:=value), not a field
+    }
+    header.Fields[key] = value;
+    if (!lastKey.empty() && key == lastKey)
+    {
+      return true;
+    }
+  }
+  return false;
+}
+
+bool Reals(const std::string& text, size_t count, double* values, const char* what,
+  std::string& error)
+{
+  const auto words = Words(text);
+  if (words.size() < count)
+  {
+    error = std::string(what) + " has " + std::to_string(words.size()) + " values, " +
+      std::to_string(count) + " needed";
+    return false;
+  }
+  for (size_t i = 0; i < count; ++i)
+  {
+    if (!ParseReal(words[i], values[i]))
+    {
+      if (Lower(words[i]) == "nan" || Lower(words[i]).find("inf") != std::string::npos)
+      {
+        values[i] = std::nan("");
+        continue;
+      }
+      error = std::string(what) + ": '" + words[i] + "' is not a number";
+      return false;
+    }
+  }
+  return true;
+}
+}
+
+bool CheckMetaImage(const std::string& path, Volume& volume, bool& streamable, std::string& error)
+{
+  std::string head;
+  TextHeader header;
+  if (!ReadHead(path, 65536, false, head, error))
+  {
+    return false;
+  }
+  if (!ParseTextHeader(head, '=', "elementdatafile", false, header))
+  {
+    error = "no ElementDataFile line in the MetaImage header";
+    return false;
+  }
+  auto& f = header.Fields;
+  double rank = 0;
+  if (!Reals(f["ndims"], 1, &rank, "NDims", error) || !(rank >= 1 && rank <= 3))
+  {
+    error = "NDims is '" + f["ndims"] + "' (1, 2 or 3 supported)";
+    return false;
+  }
+  Declared d;
+  const size_t r = static_cast<size_t>(rank);
+  const std::string spacing = f.count("elementspacing") ? f["elementspacing"] : f["elementsize"];
+  if (!Reals(f["dimsize"], r, d.Dimensions, "DimSize", error) ||
+    (!spacing.empty() && !Reals(spacing, r, d.Spacing, "ElementSpacing", error)))
+  {
+    return false;
+  }
+  d.BytesPerValue = MetaTypeSize(f["elementtype"]);
+  if (d.BytesPerValue == 0.0)
+  {
+    error = "ElementType '" + f["elementtype"] + "' is missing or not supported";
+    return false;
+  }
+  if (f.count("elementnumberofchannels") &&
+    !Reals(f["elementnumberofchannels"], 1, &d.Components, "ElementNumberOfChannels", error))
+  {
+    return false;
+  }
+  d.Compressed = Lower(f["compresseddata"]) == "true";
+  const std::string file = f["elementdatafile"];
+  if (file.empty() || file == "LIST" || file.find('%') != std::string::npos ||
+    Words(file).size() != 1)
+  {
+    error = "ElementDataFile '" + file + "' is not supported (one data file or LOCAL)";
+    return false;
+  }
+  const bool local = Lower(file) == "local";
+  const std::string data = local ? path : Relative(path, file);
+  double skip = local ? static_cast<double>(header.Length) : 0.0;
+  if (f.count("headersize"))
+  {
+    double h = 0.0;
+    if (!Reals(f["headersize"], 1, &h, "HeaderSize", error) || !(h >= -1.0))
+    {
+      error = "HeaderSize is '" + f["headersize"] + "'";
+      return false;
+    }
+    skip += std::max(0.0, h);
+  }
+  if (!DataFileSize(data, skip, d.Available, error))
+  {
+    return false;
+  }
+  volume.Format = "MetaImage";
+  streamable = !d.Compressed && Lower(f["binarydata"]) != "false";
+  return CheckDeclared(d, volume, error);
+}
+
+//------------------------------------------------------------------------------
+// NRRD: "NRRD000x" then "field: value" lines up to a blank line.
+namespace
+{
+double NrrdTypeSize(std::string type)
+{
+  type = Lower(type);
+  if (type.find("int64") != std::string::npos || type.find("long") != std::string::npos)
+    return 8;
+  if (type.find("int16") != std::string::npos || type.find("short") != std::string::npos)
+    return 2;
+  if (type.find("int8") != std::string::npos || type.find("char") != std::string::npos)
+    return 1;
+  if (type.find("int") != std::string::npos || type == "float")
+    return 4;
+  if (type == "double")
+    return 8;
+  return 0;
+}
+}
+
+bool CheckNRRD(const std::string& path, Volume& volume, bool& streamable, std::string& error)
+{
+  std::string head;
+  TextHeader header;
+  if (!ReadHead(path, 65536, false, head, error))
+  {
+    return false;
+  }
+  if (head.compare(0, 7, "NRRD000") != 0)
+  {
+    error = "no NRRD magic line (NRRD000x)";
+    return false;
+  }
+  const bool terminated = ParseTextHeader(head, ':', "", true, header);
+  auto& f = header.Fields;
+  double rank = 0;
+  if (!Reals(f["dimension"], 1, &rank, "dimension", error) || !(rank >= 1 && rank <= 4))
+  {
+    error = "dimension is '" + f["dimension"] + "' (1 to 4 supported)";
+    return false;
+  }
+  double sizes[4] = { 1, 1, 1, 1 };
+  if (!Reals(f["sizes"], static_cast<size_t>(rank), sizes, "sizes", error))
+  {
+    return false;
+  }
+  Declared d;
+  // Four axes: the first holds the components.
+  const int first = rank == 4 ? 1 : 0;
+  d.Components = rank == 4 ? sizes[0] : 1.0;
+  for (int i = first; i < rank; ++i)
+  {
+    d.Dimensions[i - first] = sizes[i];
+  }
+  if (f.count("spacings"))
+  {
+    double s[4] = { 1, 1, 1, 1 };
+    if (!Reals(f["spacings"], static_cast<size_t>(rank), s, "spacings", error))
+    {
+      return false;
+    }
+    for (int i = first; i < rank; ++i)
+    {
+      d.Spacing[i - first] = s[i];
+    }
+  }
+  d.BytesPerValue = NrrdTypeSize(f["type"]);
+  const std::string encoding = Lower(f["encoding"]);
+  if (d.BytesPerValue == 0.0 || (encoding != "raw" && encoding != "ascii" && encoding != "text" &&
+                                  encoding != "txt"))
+  {
+    error = "type '" + f["type"] + "' or encoding '" + f["encoding"] +
+      "' is not supported (numeric types, raw or ascii encoding)";
+    return false;
+  }
+  if (encoding != "raw")
+  {
+    d.BytesPerValue = 1.0; // at least one character a value
+  }
+  std::string file = f.count("data file") ? f["data file"] : f["datafile"];
+  if (file.find('%') != std::string::npos || Words(file).size() > 1 || file == "LIST")
+  {
+    error = "data file '" + file + "' is not supported (one data file)";
+    return false;
+  }
+  if (file.empty() && !terminated)
+  {
+    error = "the NRRD header has no blank line before the data";
+    return false;
+  }
+  double skip = 0.0;
+  if (f.count("byte skip") && (!Reals(f["byte skip"], 1, &skip, "byte skip", error) || skip < 0))
+  {
+    error = "byte skip is '" + f["byte skip"] + "' (>= 0 supported)";
+    return false;
+  }
+  const std::string data = file.empty() ? path : Relative(path, file);
+  if (!DataFileSize(data, skip + (file.empty() ? header.Length : 0), d.Available, error))
+  {
+    return false;
+  }
+  volume.Format = "NRRD";
+  streamable = encoding == "raw";
+  return CheckDeclared(d, volume, error);
+}
+
+//------------------------------------------------------------------------------
+// VTI: the WholeExtent and Spacing attributes of <ImageData>.
+namespace
+{
+std::string Attribute(const std::string& text, const std::string& name)
+{
+  const size_t at = text.find(" " + name + "=\"");
+  if (at == std::string::npos)
+  {
+    return std::string();
+  }
+  const size_t from = at + name.size() + 3;
+  const size_t to = text.find('"', from);
+  return to == std::string::npos ? std::string() : text.substr(from, to - from);
+}
+}
+
+bool CheckVTI(const std::string& path, Volume& volume, bool& streamable, std::string& error)
+{
+  std::string head;
+  if (!ReadHead(path, 1 << 20, false, head, error))
+  {
+    return false;
+  }
+  const size_t image = head.find("<ImageData");
+  const size_t close = image == std::string::npos ? image : head.find('>', image);
+  if (head.find("<VTKFile") == std::string::npos || close == std::string::npos)
+  {
+    error = "no <VTKFile> with an <ImageData> element";
+    return false;
+  }
+  const std::string element = head.substr(image, close - image);
+  double extent[6];
+  Declared d;
+  if (!Reals(Attribute(element, "WholeExtent"), 6, extent, "WholeExtent", error))
+  {
+    return false;
+  }
+  for (int i = 0; i < 3; ++i)
+  {
+    if (!(std::abs(extent[2 * i]) < 1.0e9 && std::abs(extent[2 * i + 1]) < 1.0e9))
+    {
+      error = "WholeExtent '" + Attribute(element, "WholeExtent") + "' is out of range";
+      return false;
+    }
+    d.Dimensions[i] = extent[2 * i + 1] - extent[2 * i] + 1;
+  }
+  const std::string spacing = Attribute(element, "Spacing");
+  if (!spacing.empty() && !Reals(spacing, 3, d.Spacing, "Spacing", error))
+  {
+    return false;
+  }
+  // No per-array sizes here: at least one byte a voxel, compressed or not.
+  d.Compressed = head.find("compressor=\"vtk") != std::string::npos;
+  d.Available = static_cast<double>(std::max(1LL, FileSize(path)));
+  volume.Format = "VTI";
+  streamable = !d.Compressed && head.find("encoding=\"raw\"") != std::string::npos &&
+    head.find("format=\"binary\"") == std::string::npos &&
+    head.find("format=\"ascii\"") == std::string::npos;
+  if (!CheckDeclared(d, volume, error))
+  {
+    return false;
+  }
+  for (int i = 0; i < 6; ++i)
+  {
+    volume.WholeExtent[i] = static_cast<int>(extent[i]);
+  }
+  return true;
+}
+}
+}
