@@ -12,6 +12,7 @@
 //
 //   bluenoise-quality [--size L] [--seeds K] [--first-seed S] [--levels 1,4,8,...]
 //                     [--optimized FILE] [--weight W]
+#include "bluenoise_options.h"
 #include "vtkBlueNoiseSpectrumKernel.h"
 #include "vtkErrorDiffusionOptimizer.h"
 #include "vtkErrorDiffusionParameterTable.h"
@@ -156,48 +157,78 @@ struct Stats
     return s.str();
   }
 };
+
+struct Options
+{
+  int Size = 128;
+  int Seeds = 4;
+  int FirstSeed = 1000;
+  double Weight = 0.02;
+  std::string OptimizedFile;
+  std::vector<double> Levels = { 1, 4, 8, 12, 16, 24, 32, 40, 48, 56, 64, 72, 80, 88, 96, 100,
+    104, 112, 120, 127 };
+};
+
+int ParseOptions(int argc, char* argv[], Options& o)
+{
+  bluenoise::CommandLine cli("bluenoise-quality",
+    "The quality report of the parameter sets: L(g), S(g), T(g) and anisotropy per level "
+    "for Optimized, Paper, Fixed, white noise and a Poisson-disk set, as a Markdown table.");
+  cli.AddCubeSize(o.Size);
+  cli.AddSeedCount(o.Seeds, 2);
+  cli.AddInteger("--first-seed", o.FirstSeed, 0, 2000000000, "the first seed");
+  cli.AddLevels(o.Levels);
+  cli.AddText("--optimized", o.OptimizedFile,
+    "parameter table measured as Optimized (default: the built-in Optimized set)");
+  cli.AddWeight(o.Weight);
+  return cli.Parse(argc, argv);
+}
+
+// The goals under the table: `a` below `b` in mean T(g) at every level (by
+// more than one standard deviation, the larger of the two, with `margin`).
+void PrintBelow(const std::vector<std::pair<double, std::map<std::string, Stats>>>& all,
+  const std::string& a, const std::string& b, bool margin)
+{
+  std::ostringstream failed;
+  int count = 0;
+  for (const auto& level : all)
+  {
+    const Stats& sa = level.second.at(a);
+    const Stats& sb = level.second.at(b);
+    const double gap = Stats::Mean(sb.T) - Stats::Mean(sa.T);
+    const double needed = margin ? std::max(Stats::Deviation(sa.T), Stats::Deviation(sb.T)) : 0.0;
+    if (gap > needed)
+    {
+      ++count;
+    }
+    else
+    {
+      failed << " " << level.first;
+    }
+  }
+  std::cout << "- mean T(g) of " << a << " below " << b
+            << (margin ? " by more than one standard deviation" : "") << ": " << count << " of "
+            << all.size() << " levels";
+  if (count < static_cast<int>(all.size()))
+  {
+    std::cout << " (not at" << failed.str() << ")";
+  }
+  std::cout << "\n";
+}
 }
 
 int main(int argc, char* argv[])
 {
-  int size = 128, seeds = 4, firstSeed = 1000;
-  double weight = 0.02;
-  std::string optimizedFile;
-  std::vector<double> levels = { 1, 4, 8, 12, 16, 24, 32, 40, 48, 56, 64, 72, 80, 88, 96, 100,
-    104, 112, 120, 127 };
-  for (int i = 1; i + 1 < argc; i += 2)
+  Options o;
+  const int parsed = ParseOptions(argc, argv, o);
+  if (parsed >= 0)
   {
-    const std::string a = argv[i], v = argv[i + 1];
-    if (a == "--size")
-      size = std::atoi(v.c_str());
-    else if (a == "--seeds")
-      seeds = std::atoi(v.c_str());
-    else if (a == "--first-seed")
-      firstSeed = std::atoi(v.c_str());
-    else if (a == "--weight")
-      weight = std::atof(v.c_str());
-    else if (a == "--optimized")
-      optimizedFile = v;
-    else if (a == "--levels")
-    {
-      levels.clear();
-      std::stringstream list(v);
-      std::string item;
-      while (std::getline(list, item, ','))
-        levels.push_back(std::atof(item.c_str()));
-    }
-    else
-    {
-      std::cerr << "usage: bluenoise-quality [--size L] [--seeds K] [--first-seed S] "
-                   "[--levels LIST] [--optimized FILE] [--weight W]\n";
-      return 2;
-    }
+    return parsed;
   }
-  if (size < 8 || seeds < 2)
-  {
-    std::cerr << "bluenoise-quality: --size >= 8 and --seeds >= 2\n";
-    return 2;
-  }
+  const int size = o.Size, seeds = o.Seeds, firstSeed = o.FirstSeed;
+  const double weight = o.Weight;
+  const std::string& optimizedFile = o.OptimizedFile;
+  const std::vector<double>& levels = o.Levels;
 
   std::vector<std::pair<std::string, vtkErrorDiffusionParameterTable>> tables;
   vtkErrorDiffusionParameterTable optimized = vtkErrorDiffusionParameterTable::Optimized();
@@ -221,9 +252,6 @@ int main(int argc, char* argv[])
             << size / 2 << " in dB.\n\n";
   std::cout << "| level | method | T(g) | L(g) | S(g) | anisotropy dB |\n"
                "| ---: | --- | ---: | ---: | ---: | ---: |\n";
-  vtkBlueNoiseSpectrumKernel spectrum;
-  spectrum.SetDimensions(size, size, size);
-  spectrum.SetWeight(weight);
   const int dims[3] = { size, size, size };
   // Per level, T of each method, for the summary under the table.
   std::vector<std::pair<double, std::map<std::string, Stats>>> all;
@@ -295,41 +323,11 @@ int main(int argc, char* argv[])
     row("PoissonDisk", poisson);
   }
 
-  // The goals: Optimized below Paper by more than one standard deviation (the
-  // larger of the two), and below the Poisson-disk set; both below white noise.
-  auto below = [&](const std::string& a, const std::string& b, bool margin) {
-    std::ostringstream failed;
-    int count = 0;
-    for (const auto& level : all)
-    {
-      const Stats& sa = level.second.at(a);
-      const Stats& sb = level.second.at(b);
-      const double gap = Stats::Mean(sb.T) - Stats::Mean(sa.T);
-      const double needed =
-        margin ? std::max(Stats::Deviation(sa.T), Stats::Deviation(sb.T)) : 0.0;
-      if (gap > needed)
-      {
-        ++count;
-      }
-      else
-      {
-        failed << " " << level.first;
-      }
-    }
-    std::cout << "- mean T(g) of " << a << " below " << b
-              << (margin ? " by more than one standard deviation" : "") << ": " << count
-              << " of " << all.size() << " levels";
-    if (count < static_cast<int>(all.size()))
-    {
-      std::cout << " (not at" << failed.str() << ")";
-    }
-    std::cout << "\n";
-  };
   std::cout << "\n";
-  below("Optimized", "Paper", true);
-  below("Optimized", "PoissonDisk", false);
-  below("Paper", "PoissonDisk", false);
-  below("Optimized", "WhiteNoise", false);
-  below("Paper", "WhiteNoise", false);
+  PrintBelow(all, "Optimized", "Paper", true);
+  PrintBelow(all, "Optimized", "PoissonDisk", false);
+  PrintBelow(all, "Paper", "PoissonDisk", false);
+  PrintBelow(all, "Optimized", "WhiteNoise", false);
+  PrintBelow(all, "Paper", "WhiteNoise", false);
   return 0;
 }
