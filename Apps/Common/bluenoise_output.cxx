@@ -232,6 +232,17 @@ std::string OutputFolder::Temporary(const std::string& name)
 
 bool OutputFolder::Commit(std::string& error)
 {
+  // What would make a rename fail is checked for every file before the first
+  // rename, so that a failure changes nothing.
+  for (const auto& file : this->Files)
+  {
+    struct stat info;
+    if (stat(file.second.c_str(), &info) == 0 && S_ISDIR(info.st_mode))
+    {
+      error = "cannot replace " + file.second + ": " + std::strerror(EISDIR);
+      return false;
+    }
+  }
   for (const auto& file : this->Files)
   {
     if (std::rename(file.first.c_str(), file.second.c_str()) != 0)

@@ -7,6 +7,7 @@
 #include "bluenoise_xml_reader.h"
 
 #include "vtkImageData.h"
+#include "vtkImageReader.h"
 #include "vtkMatrix3x3.h"
 #include "vtkMatrix4x4.h"
 #include "vtkMetaImageReader.h"
@@ -30,6 +31,32 @@ bool EndsWith(const std::string& s, const std::string& suffix)
 {
   return s.size() >= suffix.size() &&
     vtksys::SystemTools::LowerCase(s.substr(s.size() - suffix.size())) == suffix;
+}
+
+// A raw MetaImage's voxels through vtkImageReader, which reads sub-extents.
+vtkSmartPointer<vtkAlgorithm> NewRawReader(const Volume& volume)
+{
+  const RawLayout& raw = volume.Raw;
+  auto r = vtkSmartPointer<vtkImageReader>::New();
+  r->SetFileName(raw.DataFile.c_str());
+  r->SetFileDimensionality(3);
+  r->SetDataScalarType(raw.ScalarType);
+  r->SetNumberOfScalarComponents(raw.Components);
+  r->SetDataExtent(const_cast<int*>(volume.WholeExtent));
+  r->SetDataSpacing(const_cast<double*>(raw.Spacing));
+  r->SetDataOrigin(const_cast<double*>(raw.Origin));
+  r->SetHeaderSize(static_cast<unsigned long>(raw.HeaderBytes));
+  r->FileLowerLeftOn(); // rows stored first to last, as MetaImage does
+  if (raw.BigEndian)
+  {
+    r->SetDataByteOrderToBigEndian();
+  }
+  else
+  {
+    r->SetDataByteOrderToLittleEndian();
+  }
+  r->SetScalarArrayName("MetaImage"); // the name vtkMetaImageReader gives
+  return r;
 }
 
 vtkSmartPointer<vtkAlgorithm> NewReader(const std::string& path)
@@ -212,7 +239,7 @@ bool OpenVolume(
     return false;
   }
   const bool streamable = volume.StreamableFile;
-  auto reader = NewReader(path);
+  auto reader = streamable && volume.Format == "MetaImage" ? NewRawReader(volume) : NewReader(path);
   if (!reader)
   {
     error = path + ": unknown volume format (expected " + std::string(VolumeSuffixes()) + ")";

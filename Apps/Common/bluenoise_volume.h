@@ -13,7 +13,9 @@
 // errors (VTK's ErrorEvent) and failed allocations (std::bad_alloc) are
 // caught too. Every failure is a message naming the file and the problem.
 //
-// Streaming: the readers of raw MetaImage, raw NRRD and VTI files with raw
+// Streaming: raw MetaImage (read by vtkImageReader from the layout parsed
+// here: VTK's vtkMetaImageReader reads the whole file into any extent it is
+// asked for, overrunning a slab), raw NRRD and VTI files with raw
 // (uncompressed, appended) data read any sub-extent, so OpenVolume leaves
 // those unread (Volume::Streamable) for a consumer that requests z-slabs
 // (vtkErrorDiffusionSampler::SetNumberOfSlabs). NIfTI, compressed and ASCII
@@ -44,6 +46,18 @@ struct VolumeOptions
   bool AllowStreaming = false;
 };
 
+/// Where and how a raw MetaImage keeps its voxels (for a reader of sub-extents).
+struct RawLayout
+{
+  std::string DataFile;
+  double HeaderBytes = 0.0;
+  int ScalarType = 0; // VTK_UNSIGNED_CHAR, ...
+  int Components = 1;
+  bool BigEndian = false;
+  double Origin[3] = { 0, 0, 0 };
+  double Spacing[3] = { 1, 1, 1 };
+};
+
 struct Volume
 {
   std::string Path;
@@ -59,6 +73,9 @@ struct Volume
   double BytesPerVoxel = 0.0;
   /// The file's reader reads sub-extents (raw MetaImage, raw NRRD, raw appended VTI).
   bool StreamableFile = false;
+  /// Raw MetaImage: its layout, read with vtkImageReader (vtkMetaImageReader
+  /// reads the whole file into whatever extent it was asked for).
+  RawLayout Raw;
   /// Streamed: the reader, its information updated and one layer read (Sample); else null.
   vtkSmartPointer<vtkAlgorithm> Reader;
   /// Read whole: the volume. Streamed: the first layer, for the array names and types.

@@ -6,6 +6,7 @@
 #include "bluenoise_volume.h"
 
 #include <zlib.h>
+#include "vtkType.h"
 #include "vtksys/SystemTools.hxx"
 
 #include <algorithm>
@@ -389,14 +390,18 @@ bool CheckNIfTI(const std::string& path, Volume& volume, std::string& error)
 // MetaImage: "Key = Value" lines, ElementDataFile last.
 namespace
 {
-double MetaTypeSize(const std::string& type)
+// An element type's size in bytes and VTK type (0, 0 when unknown).
+std::pair<double, int> MetaType(const std::string& type)
 {
-  static const std::map<std::string, double> sizes = { { "MET_CHAR", 1 }, { "MET_UCHAR", 1 },
-    { "MET_SHORT", 2 }, { "MET_USHORT", 2 }, { "MET_INT", 4 }, { "MET_UINT", 4 },
-    { "MET_LONG", 4 }, { "MET_ULONG", 4 }, { "MET_LONG_LONG", 8 }, { "MET_ULONG_LONG", 8 },
-    { "MET_FLOAT", 4 }, { "MET_DOUBLE", 8 } };
-  const auto it = sizes.find(type);
-  return it == sizes.end() ? 0.0 : it->second;
+  static const std::map<std::string, std::pair<double, int>> types = {
+    { "MET_CHAR", { 1, VTK_SIGNED_CHAR } }, { "MET_UCHAR", { 1, VTK_UNSIGNED_CHAR } },
+    { "MET_SHORT", { 2, VTK_SHORT } }, { "MET_USHORT", { 2, VTK_UNSIGNED_SHORT } },
+    { "MET_INT", { 4, VTK_INT } }, { "MET_UINT", { 4, VTK_UNSIGNED_INT } },
+    { "MET_LONG", { 4, VTK_INT } }, { "MET_ULONG", { 4, VTK_UNSIGNED_INT } },
+    { "MET_LONG_LONG", { 8, VTK_LONG_LONG } }, { "MET_ULONG_LONG", { 8, VTK_UNSIGNED_LONG_LONG } },
+    { "MET_FLOAT", { 4, VTK_FLOAT } }, { "MET_DOUBLE", { 8, VTK_DOUBLE } } };
+  const auto it = types.find(type);
+  return it == types.end() ? std::pair<double, int>(0.0, 0) : it->second;
 }
 
 bool ParseTextHeader(const std::string& head, char separator, const std::string& lastKey,
@@ -492,7 +497,7 @@ bool CheckMetaImage(const std::string& path, Volume& volume, bool& streamable, s
   {
     return false;
   }
-  d.BytesPerValue = MetaTypeSize(f["elementtype"]);
+  d.BytesPerValue = MetaType(f["elementtype"]).first;
   if (d.BytesPerValue == 0.0)
   {
     error = "ElementType '" + f["elementtype"] + "' is missing or not supported";
@@ -530,7 +535,30 @@ bool CheckMetaImage(const std::string& path, Volume& volume, bool& streamable, s
   }
   volume.Format = "MetaImage";
   streamable = !d.Compressed && Lower(f["binarydata"]) != "false";
-  return CheckDeclared(d, volume, error);
+  if (!CheckDeclared(d, volume, error))
+  {
+    return false;
+  }
+  RawLayout& raw = volume.Raw;
+  raw.DataFile = data;
+  // HeaderSize -1: the data are the file's last bytes.
+  raw.HeaderBytes = f["headersize"] == "-1"
+    ? static_cast<double>(FileSize(data)) - static_cast<double>(volume.Voxels) * volume.BytesPerVoxel
+    : skip;
+  raw.ScalarType = MetaType(f["elementtype"]).second;
+  raw.Components = static_cast<int>(d.Components);
+  raw.BigEndian = Lower(f["binarydatabyteordermsb"]) == "true" ||
+    Lower(f["elementbyteordermsb"]) == "true";
+  const std::string origin =
+    f.count("offset") ? f["offset"] : f.count("origin") ? f["origin"] : f["position"];
+  if (!origin.empty() && (!Reals(origin, r, raw.Origin, "Offset", error) ||
+                           !std::isfinite(raw.Origin[0] + raw.Origin[1] + raw.Origin[2])))
+  {
+    error = "Offset '" + origin + "' is not finite";
+    return false;
+  }
+  std::copy(d.Spacing, d.Spacing + 3, raw.Spacing);
+  return true;
 }
 
 //------------------------------------------------------------------------------
