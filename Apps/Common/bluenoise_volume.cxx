@@ -7,6 +7,8 @@
 #include "bluenoise_xml_reader.h"
 
 #include "vtkImageData.h"
+#include "vtkInformation.h"
+#include "vtkStreamingDemandDrivenPipeline.h"
 #include "vtkImageReader.h"
 #include "vtkMatrix3x3.h"
 #include "vtkMatrix4x4.h"
@@ -22,6 +24,7 @@
 #include <cmath>
 #include <cstring>
 #include <new>
+#include <sstream>
 
 namespace bluenoise
 {
@@ -176,6 +179,54 @@ std::string ApplyNIfTIFrame(vtkNIFTIImageReader* reader, vtkImageData* image, bo
   return frame;
 }
 
+// The reader's whole extent is the one the header check vouched for (slabs
+// are requested from it).
+bool SameExtent(vtkAlgorithm* reader, const Volume& volume, std::string& error)
+{
+  VTKMessages messages;
+  messages.Attach(reader);
+  reader->UpdateInformation();
+  int extent[6] = { 0, -1, 0, -1, 0, -1 };
+  vtkInformation* info = reader->GetOutputInformation(0);
+  if (info->Has(vtkStreamingDemandDrivenPipeline::WHOLE_EXTENT()))
+  {
+    info->Get(vtkStreamingDemandDrivenPipeline::WHOLE_EXTENT(), extent);
+  }
+  if (!std::equal(extent, extent + 6, volume.WholeExtent))
+  {
+    std::ostringstream s;
+    s << "the reader's extent (" << extent[0] << " " << extent[1] << " " << extent[2] << " "
+      << extent[3] << " " << extent[4] << " " << extent[5] << ") differs from the header's ("
+      << volume.WholeExtent[0] << " " << volume.WholeExtent[1] << " " << volume.WholeExtent[2]
+      << " " << volume.WholeExtent[3] << " " << volume.WholeExtent[4] << " "
+      << volume.WholeExtent[5] << ")"
+      << (messages.Errors.empty() ? std::string() : ": " + messages.Errors.front());
+    error = s.str();
+    return false;
+  }
+  return true;
+}
+
+// A volume read whole has the extent the header check vouched for (vtkNrrdReader,
+// for one, takes the first axis of some 3D files as components).
+bool SameImageExtent(vtkImageData* image, const Volume& volume, std::string& error)
+{
+  int extent[6];
+  image->GetExtent(extent);
+  if (!std::equal(extent, extent + 6, volume.WholeExtent))
+  {
+    std::ostringstream s;
+    s << "the reader read " << image->GetDimensions()[0] << " x " << image->GetDimensions()[1]
+      << " x " << image->GetDimensions()[2] << " voxels, not the header's "
+      << volume.WholeExtent[1] - volume.WholeExtent[0] + 1 << " x "
+      << volume.WholeExtent[3] - volume.WholeExtent[2] + 1 << " x "
+      << volume.WholeExtent[5] - volume.WholeExtent[4] + 1;
+    error = s.str();
+    return false;
+  }
+  return true;
+}
+
 bool CheckImage(vtkImageData* image, std::string& error)
 {
   if (!image || image->GetNumberOfPoints() == 0)
@@ -245,6 +296,11 @@ bool OpenVolume(
     error = path + ": unknown volume format (expected " + std::string(VolumeSuffixes()) + ")";
     return false;
   }
+  if (streamable && options.AllowStreaming && !SameExtent(reader, volume, error))
+  {
+    error = path + ": " + error;
+    return false;
+  }
   if (streamable && options.AllowStreaming)
   {
     // The first layer only: the arrays' names and types, and a read that works.
@@ -264,7 +320,7 @@ bool OpenVolume(
     return false;
   }
   auto image = vtkImageData::SafeDownCast(reader->GetOutputDataObject(0));
-  if (!CheckImage(image, error))
+  if (!CheckImage(image, error) || (!volume.Reader && !SameImageExtent(image, volume, error)))
   {
     error = path + ": " + error;
     return false;

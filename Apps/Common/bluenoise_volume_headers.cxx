@@ -608,25 +608,22 @@ bool CheckNRRD(const std::string& path, Volume& volume, bool& streamable, std::s
   {
     return false;
   }
+  double spacing[4] = { 1, 1, 1, 1 };
+  if (f.count("spacings") &&
+    !Reals(f["spacings"], static_cast<size_t>(rank), spacing, "spacings", error))
+  {
+    return false;
+  }
+  // vtkNrrdReader's guess, followed so that both agree on the layout: the
+  // first axis holds the components when there are four axes, when it has
+  // at most 9 entries, or when its spacing is 0.
   Declared d;
-  // Four axes: the first holds the components.
-  const int first = rank == 4 ? 1 : 0;
-  d.Components = rank == 4 ? sizes[0] : 1.0;
+  const int first = rank > 3 || sizes[0] <= 9 || spacing[0] == 0 ? 1 : 0;
+  d.Components = first ? sizes[0] : 1.0;
   for (int i = first; i < rank; ++i)
   {
     d.Dimensions[i - first] = sizes[i];
-  }
-  if (f.count("spacings"))
-  {
-    double s[4] = { 1, 1, 1, 1 };
-    if (!Reals(f["spacings"], static_cast<size_t>(rank), s, "spacings", error))
-    {
-      return false;
-    }
-    for (int i = first; i < rank; ++i)
-    {
-      d.Spacing[i - first] = s[i];
-    }
+    d.Spacing[i - first] = spacing[i];
   }
   d.BytesPerValue = NrrdTypeSize(f["type"]);
   const std::string encoding = Lower(f["encoding"]);
@@ -683,6 +680,76 @@ std::string Attribute(const std::string& text, const std::string& name)
   const size_t to = text.find('"', from);
   return to == std::string::npos ? std::string() : text.substr(from, to - from);
 }
+
+double VTKTypeSize(const std::string& type)
+{
+  if (type == "Int8" || type == "UInt8" || type == "Char" || type == "String" || type == "Bit")
+    return 1;
+  if (type == "Int16" || type == "UInt16")
+    return 2;
+  if (type == "Int32" || type == "UInt32" || type == "Float32")
+    return 4;
+  return 8; // Int64, UInt64, Float64, IdType, and anything else at its largest
+}
+
+// What the reader will allocate for every <DataArray> of the file (the XML
+// part: up to <AppendedData>): values and bytes, one tuple per voxel unless
+// the element says NumberOfTuples. The file is scanned in chunks; a tag is
+// parsed once its closing '>' is in the buffer.
+bool DeclaredArrays(const std::string& path, double voxels, double& values, double& bytes,
+  bool& ascii, std::string& error)
+{
+  std::ifstream in(path, std::ios::binary);
+  if (!in)
+  {
+    error = std::string("cannot open: ") + std::strerror(errno);
+    return false;
+  }
+  values = bytes = 0.0;
+  ascii = false;
+  std::string buffer;
+  std::vector<char> chunk(1 << 20);
+  while (in)
+  {
+    in.read(chunk.data(), static_cast<std::streamsize>(chunk.size()));
+    buffer.append(chunk.data(), static_cast<size_t>(in.gcount()));
+    const size_t appended = buffer.find("<AppendedData");
+    size_t at = 0;
+    for (size_t tag; (tag = buffer.find("<DataArray", at)) < appended; at = tag + 1)
+    {
+      const size_t close = buffer.find('>', tag);
+      if (close == std::string::npos)
+      {
+        break;
+      }
+      const std::string element = buffer.substr(tag, close - tag);
+      double components = 1.0, tuples = voxels;
+      const std::string c = Attribute(element, "NumberOfComponents");
+      const std::string t = Attribute(element, "NumberOfTuples");
+      if ((!c.empty() && !ParseReal(c, components)) || (!t.empty() && !ParseReal(t, tuples)) ||
+        !(components >= 1.0) || !(tuples >= 0.0))
+      {
+        error = "a DataArray declares NumberOfComponents '" + c + "', NumberOfTuples '" + t + "'";
+        return false;
+      }
+      values += components * tuples;
+      bytes += components * tuples * VTKTypeSize(Attribute(element, "type"));
+      ascii = ascii || Attribute(element, "format") == "ascii";
+    }
+    if (appended != std::string::npos)
+    {
+      break;
+    }
+    // Keep an unfinished tag (and a tag name cut by the chunk) for the next round.
+    const size_t open = buffer.rfind('<');
+    buffer.erase(0, open == std::string::npos || open < at ? buffer.size() : open);
+    if (buffer.size() > (1u << 20))
+    {
+      buffer.clear(); // an endless tag: nothing VTK would read either
+    }
+  }
+  return true;
+}
 }
 
 bool CheckVTI(const std::string& path, Volume& volume, bool& streamable, std::string& error)
@@ -720,17 +787,31 @@ bool CheckVTI(const std::string& path, Volume& volume, bool& streamable, std::st
   {
     return false;
   }
-  // No per-array sizes here: at least one byte a voxel, compressed or not.
+  // At least one byte a voxel, compressed or not; then what the arrays need.
   d.Compressed = head.find("compressor=\"vtk") != std::string::npos;
   d.Available = static_cast<double>(std::max(1LL, FileSize(path)));
   volume.Format = "VTI";
   streamable = !d.Compressed && head.find("encoding=\"raw\"") != std::string::npos &&
     head.find("format=\"binary\"") == std::string::npos &&
     head.find("format=\"ascii\"") == std::string::npos;
-  if (!CheckDeclared(d, volume, error))
+  double values = 0.0, bytes = 0.0;
+  bool ascii = false;
+  if (!CheckDeclared(d, volume, error) ||
+    !DeclaredArrays(path, static_cast<double>(volume.Voxels), values, bytes, ascii, error))
   {
     return false;
   }
+  // Uncompressed, every value takes at least one byte of the file, and binary
+  // values their size; compressed, the bytes are bounded by zlib's ratio.
+  const bool fits = d.Compressed ? bytes <= d.Available * MaximumCompressionRatio
+                                 : values <= d.Available && (ascii || bytes <= d.Available);
+  if (!fits)
+  {
+    error = "the arrays declare " + Number(bytes) + " bytes of data but the file has only " +
+      Number(d.Available) + " bytes" + (d.Compressed ? " (compressed)" : "");
+    return false;
+  }
+  volume.BytesPerVoxel = volume.Voxels > 0 ? bytes / static_cast<double>(volume.Voxels) : 0.0;
   for (int i = 0; i < 6; ++i)
   {
     volume.WholeExtent[i] = static_cast<int>(extent[i]);

@@ -273,6 +273,15 @@ def vti_lying_extent(ctx):
 
 
 @case
+def vti_lying_components(ctx):
+    # 64 voxels of 10^8 components each, in a file of a few hundred bytes.
+    path = vti_ascii(ctx.path('components.vti'), (4, 4, 4), [('Float64', 'v', '1 2 3')])
+    text = open(path).read().replace('Name="v"', 'Name="v" NumberOfComponents="100000000"')
+    open(path, 'w').write(text)
+    expect_file_error(ctx, path, 'the arrays declare 51200000000 bytes')
+
+
+@case
 def vti_string_first_array(ctx):
     # A string array first and no --array: a clear error, not a crash.
     strings = ' '.join(['97 0'] * 8)
