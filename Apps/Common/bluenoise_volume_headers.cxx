@@ -187,7 +187,8 @@ std::string Relative(const std::string& header, const std::string& file)
   return vtksys::SystemTools::FileIsFullPath(file) ? file : Directory(header) + "/" + file;
 }
 
-// "key<separator>value" lines up to `end` (the first line for which end() is true).
+// "key<separator>value" lines (NRRD's separator is ": " exactly, as
+// vtkNrrdReader reads it; "key:=value" pairs are skipped).
 struct TextHeader
 {
   std::map<std::string, std::string> Fields;
@@ -404,7 +405,7 @@ std::pair<double, int> MetaType(const std::string& type)
   return it == types.end() ? std::pair<double, int>(0.0, 0) : it->second;
 }
 
-bool ParseTextHeader(const std::string& head, char separator, const std::string& lastKey,
+bool ParseTextHeader(const std::string& head, const std::string& separator, const std::string& lastKey,
   bool endAtBlankLine, TextHeader& header)
 {
   size_t at = 0;
@@ -428,7 +429,7 @@ bool ParseTextHeader(const std::string& head, char separator, const std::string&
       continue;
     }
     const std::string key = Lower(Trim(line.substr(0, split)));
-    std::string value = Trim(line.substr(split + 1));
+    std::string value = Trim(line.substr(split + separator.size()));
     if (!value.empty() && value[0] == '=')
     {
       continue; // a NRRD key/value pair (key:=value), not a field
@@ -477,7 +478,7 @@ bool CheckMetaImage(const std::string& path, Volume& volume, bool& streamable, s
   {
     return false;
   }
-  if (!ParseTextHeader(head, '=', "elementdatafile", false, header))
+  if (!ParseTextHeader(head, "=", "elementdatafile", false, header))
   {
     error = "no ElementDataFile line in the MetaImage header";
     return false;
@@ -595,7 +596,7 @@ bool CheckNRRD(const std::string& path, Volume& volume, bool& streamable, std::s
     error = "no NRRD magic line (NRRD000x)";
     return false;
   }
-  const bool terminated = ParseTextHeader(head, ':', "", true, header);
+  const bool terminated = ParseTextHeader(head, ": ", "", true, header);
   auto& f = header.Fields;
   double rank = 0;
   if (!Reals(f["dimension"], 1, &rank, "dimension", error) || !(rank >= 1 && rank <= 4))
