@@ -300,6 +300,24 @@ def missing_file(ctx):
     expect_file_error(ctx, ctx.path('absent.nii'), 'No such file')
 
 
+@case
+def missing_input_before_display(ctx):
+    # No DISPLAY and no --no-pictures: the missing volume is what is reported.
+    p = ctx.run('sample', ctx.path('absent.nii'), '--output', ctx.out)
+    check(p.returncode == 1 and 'absent.nii' in p.stderr, 'the missing input is not reported')
+    check('render the pictures' not in p.stderr, 'the display was reported before the input')
+
+
+@case
+def missing_parameter_file(ctx):
+    volume = write(ctx.path('v.nii'), nifti_header((8, 8, 8)) + ramp(512))
+    p = ctx.sample(volume, '--parameters', ctx.path('absent-table.txt'))
+    check(p.returncode == 1, 'exit status %d, expected 1' % p.returncode)
+    check('--parameters' in p.stderr and 'absent-table.txt' in p.stderr,
+          'the message does not name the option and the file')
+    check(not os.path.exists(ctx.out), 'the output folder was created')
+
+
 # --- options -------------------------------------------------------------------------
 @case
 def option_points_not_a_number(ctx):
