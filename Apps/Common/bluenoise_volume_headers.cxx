@@ -253,6 +253,7 @@ struct NIfTIHeader
   double PixDim[8] = { 0 };
   double VoxOffset = 0;
   double BitPix = 0;
+  double DataTypeBytes = 0; // the size the datatype code implies (0: unknown code)
   size_t HeaderSize = 348;
   bool SingleFile = false;
 };
@@ -269,6 +270,16 @@ T Field(const std::string& h, size_t at, bool swap)
   }
   std::memcpy(&v, bytes, sizeof(T));
   return v;
+}
+
+// Bytes per voxel of NIfTI's datatype codes (DT_UINT8 = 2, ..., DT_RGBA32 = 2304).
+double NIfTITypeBytes(int code)
+{
+  static const std::map<int, double> bytes = { { 2, 1 }, { 4, 2 }, { 8, 4 }, { 16, 4 },
+    { 32, 8 }, { 64, 8 }, { 128, 3 }, { 256, 1 }, { 512, 2 }, { 768, 4 }, { 1024, 8 },
+    { 1280, 8 }, { 1536, 16 }, { 1792, 16 }, { 2048, 32 }, { 2304, 4 } };
+  const auto it = bytes.find(code);
+  return it == bytes.end() ? 0.0 : it->second;
 }
 
 bool ParseNIfTI(const std::string& h, NIfTIHeader& n, std::string& error)
@@ -299,6 +310,7 @@ bool ParseNIfTI(const std::string& h, NIfTIHeader& n, std::string& error)
     n.PixDim[i] = two ? Field<double>(h, 104 + 8 * i, swap) : Field<float>(h, 76 + 4 * i, swap);
   }
   n.BitPix = two ? Field<int16_t>(h, 14, swap) : Field<int16_t>(h, 72, swap);
+  n.DataTypeBytes = NIfTITypeBytes(two ? Field<int16_t>(h, 12, swap) : Field<int16_t>(h, 70, swap));
   n.VoxOffset = two ? static_cast<double>(Field<int64_t>(h, 168, swap)) : Field<float>(h, 108, swap);
   n.SingleFile = two ? h.compare(4, 3, "n+2") == 0 : h.compare(344, 3, "n+1") == 0;
   if (!(n.Dim[0] >= 1 && n.Dim[0] <= 7))
@@ -343,7 +355,8 @@ bool CheckNIfTI(const std::string& path, Volume& volume, std::string& error)
     error = "dimension t is " + Number(n.Dim[4]);
     return false;
   }
-  d.BytesPerValue = n.BitPix / 8.0;
+  // The reader allocates by the datatype; a bitpix that says less is not trusted.
+  d.BytesPerValue = std::max(n.BitPix / 8.0, n.DataTypeBytes);
   // The data: in the same file after vox_offset, or in the .img of a .hdr.
   std::string body = path;
   if (!n.SingleFile)

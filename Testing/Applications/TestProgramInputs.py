@@ -237,6 +237,14 @@ def nifti_nan_spacing(ctx):
 
 
 @case
+def nifti_datatype_beyond_bitpix(ctx):
+    # float64 voxels (datatype 64) with a bitpix of 8: the reader would allocate 8 bytes a voxel.
+    path = write(ctx.path('bitpix.nii'), nifti_header((8, 8, 8), datatype=64, bitpix=8)
+                 + ramp(512))
+    expect_file_error(ctx, path, '4096 bytes of data', 'has only 512 bytes')
+
+
+@case
 def metaimage_missing_data_file(ctx):
     path = metaimage(ctx.path('missing.mhd'), (8, 8, 8), 'missing.raw')
     expect_file_error(ctx, path, 'missing.raw', 'No such file')
