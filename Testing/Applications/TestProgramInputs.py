@@ -547,6 +547,22 @@ def small_requests(ctx):
 
 
 @case
+def degenerate_volumes(ctx):
+    # Constant and 2D volumes are sampled to the budget; an all-NaN one is a clear error.
+    constant = write(ctx.path('constant.nii'), nifti_header((8, 8, 8)) + bytes([7] * 512))
+    summary, _ = sampled(ctx, constant, 'constant.csv', '--points', 100)
+    check(int(summary['points']) == 100, 'points=%s for a constant volume' % summary['points'])
+    flat = write(ctx.path('flat.nii'), nifti_header((16, 16)) + bytes(range(256)))
+    summary, _ = sampled(ctx, flat, 'flat.csv', '--points', 100)
+    check(int(summary['points']) == 100, 'points=%s for a 2D volume' % summary['points'])
+    nan = write(ctx.path('nan.nii'), nifti_header((8, 8, 8), datatype=16, bitpix=32)
+                + struct.pack('<512f', *([float('nan')] * 512)))
+    p = ctx.sample(nan)
+    check(p.returncode == 1 and 'nan.nii' in p.stderr and 'no samples' in p.stderr,
+          'an all-NaN volume does not fail clearly')
+
+
+@case
 def budget_out_of_reach(ctx):
     # 7 of 8 voxels can be drawn (one is at the bottom of the range): the
     # module's warning names the maximum.
