@@ -50,14 +50,14 @@ int ParseOptions(int argc, char* argv[], Options& o)
   bluenoise::CommandLine cli("bluenoise-optimize",
     "The paper's parameter search: per density level, the diffusion coefficients and m(g) "
     "that minimize T(g) = w L(g) + (1 - w) S(g), written as a parameter table.");
-  cli.AddText("--output", o.Output, "parameter table to write");
+  cli.AddText("--output", o.Output, "FILE", "parameter table to write");
   cli.AddCubeSize(o.Settings.GridSize);
   cli.AddSeedCount(o.Settings.Seeds, 1);
   cli.AddWeight(o.Settings.Weight);
   cli.AddInteger("--evaluations", o.Settings.MaximumEvaluations, 1, 1000000,
     "Nelder-Mead budget per level");
   cli.AddLevels(o.Levels);
-  cli.AddText("--start", o.Start, "start parameters: paper, fixed or a parameter table file");
+  cli.AddText("--start", o.Start, "SET|FILE", "start parameters: paper, fixed or a parameter table file");
   cli.AddInteger("--threads", o.Threads, 1, 1024, "levels optimized in parallel");
   cli.AddFlag("--resume", o.Resume, "keep the levels already in the --output table, do the others");
   return cli.Parse(argc, argv);

@@ -178,7 +178,7 @@ int ParseOptions(int argc, char* argv[], Options& o)
   cli.AddSeedCount(o.Seeds, 2);
   cli.AddInteger("--first-seed", o.FirstSeed, 0, 2000000000, "the first seed");
   cli.AddLevels(o.Levels);
-  cli.AddText("--optimized", o.OptimizedFile,
+  cli.AddText("--optimized", o.OptimizedFile, "FILE",
     "parameter table measured as Optimized (default: the built-in Optimized set)");
   cli.AddWeight(o.Weight);
   return cli.Parse(argc, argv);

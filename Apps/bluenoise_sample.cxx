@@ -121,16 +121,16 @@ int ParseOptions(int argc, char* argv[], Settings& s)
     bluenoise::VolumeSuffixes() + " (default: " + DefaultVolume + " when installed, else " +
     "Data/brain-small.vti)";
   cli.AddPositional("volume", s.Volume, defaultVolume);
-  cli.AddText("--output", s.OutputDir, "output folder");
-  cli.AddText("--samples", s.SamplesName, "file name of the points in the output folder; "
+  cli.AddText("--output", s.OutputDir, "DIR", "output folder");
+  cli.AddText("--samples", s.SamplesName, "NAME", "file name of the points in the output folder; "
                                           "its extension (.vtp, .csv, .ply) chooses the format");
   cli.AddInteger("--points", s.Points, 1, 1000000000000LL, "expected number of points");
   cli.AddReal("--scale", s.Scale, 0.0, 1.0e6, "DensityScale instead of --points");
   cli.Exclude("--points", "--scale");
-  cli.AddText("--array", s.ArrayName, "point array to sample by (default: the active scalars, "
+  cli.AddText("--array", s.ArrayName, "NAME", "point array to sample by (default: the active scalars, "
                                       "else the first array)");
   cli.AddInteger("--seed", s.Seed, 0, 2147483647, "seed of the threshold noise");
-  cli.AddText("--parameters", s.Parameters,
+  cli.AddText("--parameters", s.Parameters, "SET|FILE",
     "diffusion parameters: paper (Table 1), fixed, optimized, or a parameter table file");
   cli.AddInteger("--spectrum-grid", s.SpectrumGrid, 8, 512,
     "edge L of the cubic grid of the uniform-density run");

@@ -163,24 +163,20 @@ void CommandLine::AddRealList(const std::string& name, std::vector<double>& valu
     ->type_name("LIST");
 }
 
-void CommandLine::AddText(
-  const std::string& name, std::string& value, const std::string& help, bool* set)
+void CommandLine::AddText(const std::string& name, std::string& value, const std::string& type,
+  const std::string& help)
 {
   this->App
     ->add_option_function<std::string>(
-      name, [&value, name, set](const std::string& text) {
+      name, [&value, name](const std::string& text) {
         if (text.empty())
         {
           throw CLI::ValidationError(name, "an empty value");
         }
         value = text;
-        if (set)
-        {
-          *set = true;
-        }
       },
       help + (value.empty() ? std::string() : " (default " + value + ")"))
-    ->type_name("TEXT");
+    ->type_name(type);
 }
 
 void CommandLine::AddFlag(const std::string& name, bool& value, const std::string& help)

@@ -42,9 +42,9 @@ public:
   /// A comma-separated list of finite reals, each in (lo, hi].
   void AddRealList(const std::string& name, std::vector<double>& values, double lo, double hi,
     const std::string& help);
-  /// A string (a file, a folder, a name); `set` (optional) says whether it was given.
-  void AddText(const std::string& name, std::string& value, const std::string& help,
-    bool* set = nullptr);
+  /// A string; `type` names it in --help (FILE, DIR, NAME, ...).
+  void AddText(const std::string& name, std::string& value, const std::string& type,
+    const std::string& help);
   void AddFlag(const std::string& name, bool& value, const std::string& help);
   /// At most one positional argument.
   void AddPositional(const std::string& name, std::string& value, const std::string& help);
