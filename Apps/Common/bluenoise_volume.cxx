@@ -296,7 +296,9 @@ bool OpenVolume(
     error = path + ": unknown volume format (expected " + std::string(VolumeSuffixes()) + ")";
     return false;
   }
-  if (streamable && options.AllowStreaming && !SameExtent(reader, volume, error))
+  // The reader's own reading of the header must agree with the check's
+  // before it reads a byte of data.
+  if (!SameExtent(reader, volume, error))
   {
     error = path + ": " + error;
     return false;

@@ -506,6 +506,11 @@ bool CheckMetaImage(const std::string& path, Volume& volume, bool& streamable, s
   Declared d;
   const size_t r = static_cast<size_t>(rank);
   const std::string spacing = f.count("elementspacing") ? f["elementspacing"] : f["elementsize"];
+  if (Words(f["dimsize"]).size() != r)
+  {
+    error = "DimSize '" + f["dimsize"] + "' does not have NDims (" + f["ndims"] + ") values";
+    return false;
+  }
   if (!Reals(f["dimsize"], r, d.Dimensions, "DimSize", error) ||
     (!spacing.empty() && !Reals(spacing, r, d.Spacing, "ElementSpacing", error)))
   {
@@ -618,6 +623,11 @@ bool CheckNRRD(const std::string& path, Volume& volume, bool& streamable, std::s
     return false;
   }
   double sizes[4] = { 1, 1, 1, 1 };
+  if (Words(f["sizes"]).size() != static_cast<size_t>(rank))
+  {
+    error = "sizes '" + f["sizes"] + "' does not have dimension (" + f["dimension"] + ") values";
+    return false;
+  }
   if (!Reals(f["sizes"], static_cast<size_t>(rank), sizes, "sizes", error))
   {
     return false;

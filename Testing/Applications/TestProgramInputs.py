@@ -272,6 +272,14 @@ def nrrd_short_inline_data(ctx):
 
 
 @case
+def nrrd_sizes_beyond_dimension(ctx):
+    # Three sizes for one dimension (vtkNrrdReader crashed reading it).
+    header = b'NRRD0004\ntype: uint8\ndimension: 1\nsizes: 12 8 4\nencoding: raw\n\n'
+    expect_file_error(ctx, write(ctx.path('sizes.nrrd'), header + ramp(384)),
+                      'does not have dimension (1) values')
+
+
+@case
 def vti_lying_extent(ctx):
     path = vti_ascii(ctx.path('lying.vti'), (4, 4, 4), [('UInt8', 'v', ' '.join(['1'] * 64))])
     text = open(path).read().replace('WholeExtent="0 3 0 3 0 3"',
