@@ -496,6 +496,11 @@ bool CheckMetaImage(const std::string& path, Volume& volume, bool& streamable, s
     error = "no ElementDataFile line in the MetaImage header";
     return false;
   }
+  if (head.find('\0') < header.Length)
+  {
+    error = "the MetaImage header contains a NUL byte";
+    return false;
+  }
   auto& f = header.Fields;
   double rank = 0;
   if (!Reals(f["ndims"], 1, &rank, "NDims", error) || !(rank >= 1 && rank <= 3))
@@ -615,6 +620,13 @@ bool CheckNRRD(const std::string& path, Volume& volume, bool& streamable, std::s
     return false;
   }
   const bool terminated = ParseTextHeader(head, ": ", "", true, header);
+  // vtkNrrdReader reads the header as a C string: a NUL byte in it made the
+  // reader loop for ever (found by the fuzzer).
+  if (head.find('\0') < header.Length)
+  {
+    error = "the NRRD header contains a NUL byte";
+    return false;
+  }
   auto& f = header.Fields;
   double rank = 0;
   if (!Reals(f["dimension"], 1, &rank, "dimension", error) || !(rank >= 1 && rank <= 4))

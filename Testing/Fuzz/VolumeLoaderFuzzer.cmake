@@ -3,6 +3,7 @@
 # The volume loading of the programs (Apps/Common, BlueNoiseApps) on arbitrary
 # bytes; seeds in corpus/VolumeLoader/ (a .vti with ascii data, a NIfTI-1
 # header and body, a NRRD with inline raw data, a MetaImage with LOCAL data,
-# and the NRRD inputs that crashed vtkNrrdReader before the checks caught them).
+# and the NRRD inputs that crashed or hung vtkNrrdReader before the checks
+# caught them).
 # Included by Testing/Fuzz/CMakeLists.txt, which defines bluenoise_add_fuzzer.
 bluenoise_add_fuzzer(FuzzVolumeLoader SOURCES FuzzVolumeLoader.cxx LIBRARIES BlueNoiseApps)
