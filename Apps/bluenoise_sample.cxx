@@ -568,7 +568,7 @@ int main(int argc, char* argv[])
   options.VoxelSpace = s.VoxelSpace;
   options.AllowStreaming = true;
   std::string arrayName;
-  if (!bluenoise::OpenVolume(s.Volume, options, volume, error))
+  if (!bluenoise::ReadVolume(options, volume, error))
   {
     return Fail(error);
   }

@@ -285,10 +285,12 @@ bool CheckVolumeFile(const std::string& path, Volume& volume, std::string& error
 bool OpenVolume(
   const std::string& path, const VolumeOptions& options, Volume& volume, std::string& error)
 {
-  if (!CheckVolumeFile(path, volume, error))
-  {
-    return false;
-  }
+  return CheckVolumeFile(path, volume, error) && ReadVolume(options, volume, error);
+}
+
+bool ReadVolume(const VolumeOptions& options, Volume& volume, std::string& error)
+{
+  const std::string& path = volume.Path;
   const bool streamable = volume.StreamableFile;
   auto reader = streamable && volume.Format == "MetaImage" ? NewRawReader(volume) : NewReader(path);
   if (!reader)

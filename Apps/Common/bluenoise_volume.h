@@ -86,7 +86,10 @@ struct Volume
 /// Checks the file (header against real size) without reading its data.
 bool CheckVolumeFile(const std::string& path, Volume& volume, std::string& error);
 
-/// CheckVolumeFile, then reads (or, streamable and allowed, prepares) the volume.
+/// Reads (or, streamable and allowed, prepares) a volume CheckVolumeFile vouched for.
+bool ReadVolume(const VolumeOptions& options, Volume& volume, std::string& error);
+
+/// CheckVolumeFile, then ReadVolume.
 bool OpenVolume(
   const std::string& path, const VolumeOptions& options, Volume& volume, std::string& error);
 
