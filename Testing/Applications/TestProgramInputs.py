@@ -265,6 +265,13 @@ def metaimage_negative_spacing(ctx):
 
 
 @case
+def metaimage_bad_type(ctx):
+    write(ctx.path('bad.raw'), ramp(512))
+    path = metaimage(ctx.path('bad.mhd'), (8, 8, 8), 'bad.raw', element='MET_STRING')
+    expect_file_error(ctx, path, "ElementType 'MET_STRING'")
+
+
+@case
 def nrrd_short_inline_data(ctx):
     header = b'NRRD0004\ntype: uint8\ndimension: 3\nsizes: 16 16 16\nencoding: raw\n\n'
     expect_file_error(ctx, write(ctx.path('short.nrrd'), header + ramp(300)),
