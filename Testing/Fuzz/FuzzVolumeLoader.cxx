@@ -2,7 +2,8 @@
 // SPDX-License-Identifier: BSD-3-Clause
 // libFuzzer target: the programs' volume loading (bluenoise::OpenVolume, with
 // its header checks and VTK's readers) on arbitrary bytes. The bytes are
-// written to a scratch file under each supported suffix in turn and loaded;
+// written to a scratch file under each suffix whose format they could be
+// (those whose magic they start with, else all) and loaded;
 // a load must end in success or a message, never in a crash, a hang or an
 // allocation beyond what the file's real size allows (libFuzzer's
 // -rss_limit_mb and -malloc_limit_mb catch the latter).
@@ -11,16 +12,44 @@
 #include "vtkImageData.h"
 #include "vtkObject.h"
 
+#include <algorithm>
 #include <cstddef>
 #include <cstdint>
 #include <cstdio>
 #include <cstdlib>
+#include <cstring>
 #include <string>
 #include <unistd.h>
+#include <vector>
 
 namespace
 {
 const char* const Suffixes[] = { ".vti", ".nii", ".nii.gz", ".nrrd", ".nhdr", ".mhd", ".mha" };
+
+// The suffixes worth trying for these bytes: the formats whose magic they
+// start with, or every suffix when they start with none (arbitrary bytes
+// still go through every loader, recognizable ones only through theirs).
+std::vector<const char*> SuffixesFor(const uint8_t* data, size_t size)
+{
+  const std::string head(reinterpret_cast<const char*>(data), std::min<size_t>(size, 16));
+  int32_t sizeofHeader = 0;
+  if (size >= 4)
+  {
+    std::memcpy(&sizeofHeader, data, 4);
+  }
+  if (head.compare(0, 4, "NRRD") == 0)
+    return { ".nrrd", ".nhdr" };
+  if (head.compare(0, 1, "<") == 0)
+    return { ".vti" };
+  if (size >= 2 && data[0] == 0x1f && data[1] == 0x8b)
+    return { ".nii.gz" };
+  if (sizeofHeader == 348 || sizeofHeader == 540 || sizeofHeader == 0x5C010000 ||
+    sizeofHeader == 0x1C020000)
+    return { ".nii" };
+  if (head.compare(0, 5, "NDims") == 0 || head.compare(0, 10, "ObjectType") == 0)
+    return { ".mhd", ".mha" };
+  return std::vector<const char*>(std::begin(Suffixes), std::end(Suffixes));
+}
 
 // One scratch folder per process, removed at exit.
 std::string ScratchFolder()
@@ -54,7 +83,7 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size)
   }();
   (void)quiet;
   const std::string folder = ScratchFolder();
-  for (const char* suffix : Suffixes)
+  for (const char* suffix : SuffixesFor(data, size))
   {
     const std::string path = folder + "/input" + suffix;
     FILE* file = std::fopen(path.c_str(), "wb");
