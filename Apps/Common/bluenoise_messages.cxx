@@ -28,21 +28,20 @@ std::string PlainMessage(const char* message)
 
 VTKMessages::~VTKMessages()
 {
-  if (this->Object)
+  for (const Observed& o : this->Objects)
   {
-    this->Object->RemoveObserver(this->Tags[0]);
-    this->Object->RemoveObserver(this->Tags[1]);
+    o.Object->RemoveObserver(o.Tags[0]);
+    o.Object->RemoveObserver(o.Tags[1]);
   }
 }
 
 void VTKMessages::Attach(vtkObject* object)
 {
-  this->Object = object;
   vtkNew<vtkCallbackCommand> callback;
   callback->SetCallback(&VTKMessages::Record);
   callback->SetClientData(this);
-  this->Tags[0] = object->AddObserver(vtkCommand::ErrorEvent, callback);
-  this->Tags[1] = object->AddObserver(vtkCommand::WarningEvent, callback);
+  this->Objects.push_back({ object, { object->AddObserver(vtkCommand::ErrorEvent, callback),
+                                      object->AddObserver(vtkCommand::WarningEvent, callback) } });
 }
 
 void VTKMessages::Record(vtkObject*, unsigned long event, void* clientData, void* callData)

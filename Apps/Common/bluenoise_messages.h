@@ -21,15 +21,20 @@ public:
   VTKMessages(const VTKMessages&) = delete;
   VTKMessages& operator=(const VTKMessages&) = delete;
 
-  /// Collects `object`'s ErrorEvent and WarningEvent until destroyed.
+  /// Collects `object`'s ErrorEvent and WarningEvent until destroyed (several
+  /// objects may be attached; `object` must outlive this).
   void Attach(vtkObject* object);
   std::vector<std::string> Errors;
   std::vector<std::string> Warnings;
 
 private:
   static void Record(vtkObject*, unsigned long event, void* clientData, void* callData);
-  vtkObject* Object = nullptr;
-  unsigned long Tags[2] = { 0, 0 };
+  struct Observed
+  {
+    vtkObject* Object;
+    unsigned long Tags[2];
+  };
+  std::vector<Observed> Objects;
 };
 
 /// VTK's message text without the "ERROR: In file, line N\nClass (0x...): " prefix.
