@@ -8,15 +8,19 @@
 // and spacing must be positive and finite, a NIfTI data offset must lie in
 // the file, the data (a MetaImage's or a detached NRRD's data file, a NIfTI
 // body, decompressed when gzipped) must hold at least what the header
-// declares; compressed data is bounded by zlib's largest ratio. So time and
-// memory follow the file's real size, whatever its header claims. Reader
+// declares (a VTI's arrays: their components, tuples and types); compressed
+// data is bounded by zlib's largest ratio. So time and memory follow the
+// file's real size, whatever its header claims. Text headers with a NUL byte
+// are refused, NRRD fields are read as vtkNrrdReader reads them (": ", the
+// first axis as components when it has at most 9 entries), and the reader's
+// own extent must equal the checked one before it reads any data. Reader
 // errors (VTK's ErrorEvent) and failed allocations (std::bad_alloc) are
 // caught too. Every failure is a message naming the file and the problem.
 //
 // Streaming: raw MetaImage (read by vtkImageReader from the layout parsed
 // here: VTK's vtkMetaImageReader reads the whole file into any extent it is
 // asked for, overrunning a slab), raw NRRD and VTI files with raw
-// (uncompressed, appended) data read any sub-extent, so OpenVolume leaves
+// (uncompressed, appended) data read any sub-extent, so ReadVolume leaves
 // those unread (Volume::Streamable) for a consumer that requests z-slabs
 // (vtkErrorDiffusionSampler::SetNumberOfSlabs). NIfTI, compressed and ASCII
 // files are read whole.
