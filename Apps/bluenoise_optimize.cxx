@@ -9,11 +9,14 @@
 //   bluenoise-optimize [--output FILE] [--size L] [--seeds K] [--weight W]
 //                      [--evaluations N] [--levels 1,8,16,...] [--start paper|fixed|FILE]
 //                      [--threads T] [--resume]
+#include "bluenoise_options.h"
 #include "vtkErrorDiffusionOptimizer.h"
 #include "vtkErrorDiffusionParameterTable.h"
 
 #include <algorithm>
 #include <atomic>
+#include <cerrno>
+#include <cstring>
 #include <chrono>
 #include <cstdio>
 #include <cstdlib>
@@ -31,20 +34,33 @@ namespace
 using Key = vtkErrorDiffusionParameterTable::Key;
 using LevelResult = vtkErrorDiffusionOptimizer::LevelResult;
 
-void Usage(std::ostream& os)
+struct Options
 {
-  os << "usage: bluenoise-optimize [--output FILE] [--size L] [--seeds K] [--weight W]\n"
-        "                          [--evaluations N] [--levels 1,8,...] [--start paper|fixed|FILE]\n"
-        "                          [--threads T] [--resume]\n"
-        "  --output FILE      table to write (default optimized-parameters.txt)\n"
-        "  --size L           edge of the constant-density cube sampled per evaluation (64)\n"
-        "  --seeds K          realisations averaged per evaluation, seeds 0..K-1 (4)\n"
-        "  --weight W         w in T = w L + (1 - w) S (0.02)\n"
-        "  --evaluations N    Nelder-Mead budget per level (400)\n"
-        "  --levels LIST      key levels in 1/255 units (the paper's 17)\n"
-        "  --start SET        start parameters: paper, fixed or a table file (paper)\n"
-        "  --threads T        levels optimised in parallel (the number of cores)\n"
-        "  --resume           keep the levels already in FILE and do the others\n";
+  std::string Output = "optimized-parameters.txt";
+  std::string Start = "paper";
+  bool Resume = false;
+  int Threads = static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
+  vtkErrorDiffusionOptimizer::Settings Settings;
+  std::vector<double> Levels = { 1, 8, 16, 24, 32, 40, 48, 56, 64, 72, 80, 88, 96, 104, 112, 120,
+    127 };
+};
+
+int ParseOptions(int argc, char* argv[], Options& o)
+{
+  bluenoise::CommandLine cli("bluenoise-optimize",
+    "The paper's parameter search: per density level, the diffusion coefficients and m(g) "
+    "that minimize T(g) = w L(g) + (1 - w) S(g), written as a parameter table.");
+  cli.AddText("--output", o.Output, "FILE", "parameter table to write");
+  cli.AddCubeSize(o.Settings.GridSize);
+  cli.AddSeedCount(o.Settings.Seeds, 1);
+  cli.AddWeight(o.Settings.Weight);
+  cli.AddInteger("--evaluations", o.Settings.MaximumEvaluations, 1, 1000000,
+    "Nelder-Mead budget per level");
+  cli.AddLevels(o.Levels);
+  cli.AddText("--start", o.Start, "SET|FILE", "start parameters: paper, fixed or a parameter table file");
+  cli.AddInteger("--threads", o.Threads, 1, 1024, "levels optimized in parallel");
+  cli.AddFlag("--resume", o.Resume, "keep the levels already in the --output table, do the others");
+  return cli.Parse(argc, argv);
 }
 
 // One comment line per level: the whole-volume figures the search minimised,
@@ -117,75 +133,17 @@ void ReadDone(const std::string& file, std::map<double, std::pair<Key, std::stri
 
 int main(int argc, char* argv[])
 {
-  std::string output = "optimized-parameters.txt";
-  std::string start = "paper";
-  bool resume = false;
-  unsigned threads = std::max(1u, std::thread::hardware_concurrency());
-  vtkErrorDiffusionOptimizer::Settings settings;
-  std::vector<double> levels = { 1, 8, 16, 24, 32, 40, 48, 56, 64, 72, 80, 88, 96, 104, 112, 120,
-    127 };
-  for (int i = 1; i < argc; ++i)
+  Options o;
+  const int parsed = ParseOptions(argc, argv, o);
+  if (parsed >= 0)
   {
-    const std::string a = argv[i];
-    auto value = [&]() -> std::string {
-      if (i + 1 >= argc)
-      {
-        std::cerr << "bluenoise-optimize: " << a << " needs a value\n";
-        std::exit(2);
-      }
-      return argv[++i];
-    };
-    if (a == "-h" || a == "--help")
-    {
-      Usage(std::cout);
-      return 0;
-    }
-    else if (a == "--output")
-      output = value();
-    else if (a == "--size")
-      settings.GridSize = std::atoi(value().c_str());
-    else if (a == "--seeds")
-      settings.Seeds = std::atoi(value().c_str());
-    else if (a == "--weight")
-      settings.Weight = std::atof(value().c_str());
-    else if (a == "--evaluations")
-      settings.MaximumEvaluations = std::atoi(value().c_str());
-    else if (a == "--start")
-      start = value();
-    else if (a == "--threads")
-      threads = static_cast<unsigned>(std::max(1, std::atoi(value().c_str())));
-    else if (a == "--resume")
-      resume = true;
-    else if (a == "--levels")
-    {
-      levels.clear();
-      std::stringstream list(value());
-      std::string item;
-      while (std::getline(list, item, ','))
-      {
-        levels.push_back(std::atof(item.c_str()));
-      }
-    }
-    else
-    {
-      std::cerr << "bluenoise-optimize: unknown option " << a << "\n";
-      Usage(std::cerr);
-      return 2;
-    }
+    return parsed;
   }
-  for (double level : levels)
-  {
-    if (!(level > 0.0 && level <= 127.5))
-    {
-      std::cerr << "bluenoise-optimize: levels must be in (0, 127.5], not " << level << "\n";
-      return 2;
-    }
-  }
-  if (settings.GridSize < 8 || settings.Seeds < 1 || settings.MaximumEvaluations < 1)
-  {
-    std::cerr << "bluenoise-optimize: --size >= 8, --seeds >= 1, --evaluations >= 1\n";
-    return 2;
-  }
+  const std::string& output = o.Output;
+  const std::string& start = o.Start;
+  const auto& settings = o.Settings;
+  const unsigned threads = static_cast<unsigned>(o.Threads);
+  const std::vector<double>& levels = o.Levels;
 
   vtkErrorDiffusionParameterTable startTable = vtkErrorDiffusionParameterTable::Paper();
   if (start == "fixed")
@@ -202,8 +160,22 @@ int main(int argc, char* argv[])
     }
   }
 
+  // The table's folder must take the file before hours of search, not after.
+  {
+    const std::string probe = output + ".partial";
+    std::ofstream test(probe, std::ios::app);
+    if (!test)
+    {
+      std::cerr << "bluenoise-optimize: cannot write " << probe << ": " << std::strerror(errno)
+                << "\n";
+      return 1;
+    }
+    test.close();
+    std::remove(probe.c_str());
+  }
+
   std::map<double, std::pair<Key, std::string>> done;
-  if (resume)
+  if (o.Resume)
   {
     ReadDone(output, done);
     std::cout << "resuming: " << done.size() << " level(s) already in " << output << std::endl;
@@ -256,7 +228,8 @@ int main(int argc, char* argv[])
       std::cout << done[level].second << " [" << seconds << " s]" << std::endl;
       if (!WriteTable(output, done, header.str()))
       {
-        std::cerr << "bluenoise-optimize: cannot write " << output << "\n";
+        std::cerr << "bluenoise-optimize: cannot write " << output << ": "
+                  << std::strerror(errno) << "\n";
       }
     }
   };

@@ -18,6 +18,7 @@
 //
 //   bluenoise-quality [--size L] [--seeds K] [--first-seed S] [--levels 1,4,8,...]
 //                     [--optimized FILE] [--weight W]
+#include "bluenoise_options.h"
 #include "vtkBlueNoiseSpectrumKernel.h"
 #include "vtkErrorDiffusionOptimizer.h"
 #include "vtkErrorDiffusionParameterTable.h"
@@ -284,47 +285,81 @@ struct Stats
     return s.str();
   }
 };
+
+struct Options
+{
+  int Size = 128;
+  int Seeds = 4;
+  int FirstSeed = 1000;
+  double Weight = 0.02;
+  std::string OptimizedFile;
+  std::vector<double> Levels = { 1, 4, 8, 16, 64, 127 };
+};
+
+int ParseOptions(int argc, char* argv[], Options& o)
+{
+  bluenoise::CommandLine cli("bluenoise-quality",
+    "The quality report of the sampling methods: L(g), S(g), T(g) and anisotropy per level "
+    "for the sampler's methods and parameter sets and a continuous Poisson-disk set, and "
+    "local-density profiles, as Markdown tables.");
+  cli.AddCubeSize(o.Size);
+  cli.AddSeedCount(o.Seeds, 2);
+  cli.AddInteger("--first-seed", o.FirstSeed, 0, 2000000000, "the first seed");
+  cli.AddLevels(o.Levels);
+  cli.AddText("--optimized", o.OptimizedFile, "FILE",
+    "parameter table measured as Optimized (default: the built-in Optimized set)");
+  cli.AddWeight(o.Weight);
+  return cli.Parse(argc, argv);
+}
+
+// The goals under the table: `a` below `b` in the mean of `metric` (T(g) by
+// default) at every level (by more than one standard deviation, the larger of
+// the two, with `margin`).
+void PrintBelow(const std::vector<std::pair<double, std::map<std::string, Stats>>>& all,
+  const std::string& a, const std::string& b, bool margin,
+  std::vector<double> Stats::*metric = &Stats::T, const char* label = "T(g)")
+{
+  std::ostringstream failed;
+  int count = 0;
+  for (const auto& level : all)
+  {
+    const Stats& sa = level.second.at(a);
+    const Stats& sb = level.second.at(b);
+    const double gap = Stats::Mean(sb.*metric) - Stats::Mean(sa.*metric);
+    const double needed =
+      margin ? std::max(Stats::Deviation(sa.*metric), Stats::Deviation(sb.*metric)) : 0.0;
+    if (gap > needed)
+    {
+      ++count;
+    }
+    else
+    {
+      failed << " " << level.first;
+    }
+  }
+  std::cout << "- mean " << label << " of " << a << " below " << b
+            << (margin ? " by more than one standard deviation" : "") << ": " << count << " of "
+            << all.size() << " levels";
+  if (count < static_cast<int>(all.size()))
+  {
+    std::cout << " (not at" << failed.str() << ")";
+  }
+  std::cout << "\n";
+}
 }
 
 int main(int argc, char* argv[])
 {
-  int size = 128, seeds = 4, firstSeed = 1000;
-  double weight = 0.02;
-  std::string optimizedFile;
-  std::vector<double> levels = { 1, 4, 8, 16, 64, 127 };
-  for (int i = 1; i + 1 < argc; i += 2)
+  Options o;
+  const int parsed = ParseOptions(argc, argv, o);
+  if (parsed >= 0)
   {
-    const std::string a = argv[i], v = argv[i + 1];
-    if (a == "--size")
-      size = std::atoi(v.c_str());
-    else if (a == "--seeds")
-      seeds = std::atoi(v.c_str());
-    else if (a == "--first-seed")
-      firstSeed = std::atoi(v.c_str());
-    else if (a == "--weight")
-      weight = std::atof(v.c_str());
-    else if (a == "--optimized")
-      optimizedFile = v;
-    else if (a == "--levels")
-    {
-      levels.clear();
-      std::stringstream list(v);
-      std::string item;
-      while (std::getline(list, item, ','))
-        levels.push_back(std::atof(item.c_str()));
-    }
-    else
-    {
-      std::cerr << "usage: bluenoise-quality [--size L] [--seeds K] [--first-seed S] "
-                   "[--levels LIST] [--optimized FILE] [--weight W]\n";
-      return 2;
-    }
+    return parsed;
   }
-  if (size < 8 || seeds < 2)
-  {
-    std::cerr << "bluenoise-quality: --size >= 8 and --seeds >= 2\n";
-    return 2;
-  }
+  const int size = o.Size, seeds = o.Seeds, firstSeed = o.FirstSeed;
+  const double weight = o.Weight;
+  const std::string& optimizedFile = o.OptimizedFile;
+  const std::vector<double>& levels = o.Levels;
 
   std::vector<std::pair<std::string, vtkErrorDiffusionParameterTable>> tables;
   vtkErrorDiffusionParameterTable optimized = vtkErrorDiffusionParameterTable::Optimized();
@@ -348,9 +383,6 @@ int main(int argc, char* argv[])
             << size / 2 << " in dB.\n\n";
   std::cout << "| level | method | T(g) | L(g) | S(g) | anisotropy dB |\n"
                "| ---: | --- | ---: | ---: | ---: | ---: |\n";
-  vtkBlueNoiseSpectrumKernel spectrum;
-  spectrum.SetDimensions(size, size, size);
-  spectrum.SetWeight(weight);
   const int dims[3] = { size, size, size };
   // Per level, T of each method, for the summary under the table.
   std::vector<std::pair<double, std::map<std::string, Stats>>> all;
@@ -426,45 +458,14 @@ int main(int argc, char* argv[])
     row("ContinuousPoissonDisk", continuous);
   }
 
-  // The goals: Optimized below Paper by more than one standard deviation (the
-  // larger of the two), and below the Poisson-disk set; both below white noise.
-  auto below = [&](const std::string& a, const std::string& b, bool margin,
-                 std::vector<double> Stats::*metric = &Stats::T, const char* label = "T(g)") {
-    std::ostringstream failed;
-    int count = 0;
-    for (const auto& level : all)
-    {
-      const Stats& sa = level.second.at(a);
-      const Stats& sb = level.second.at(b);
-      const double gap = Stats::Mean(sb.*metric) - Stats::Mean(sa.*metric);
-      const double needed =
-        margin ? std::max(Stats::Deviation(sa.*metric), Stats::Deviation(sb.*metric)) : 0.0;
-      if (gap > needed)
-      {
-        ++count;
-      }
-      else
-      {
-        failed << " " << level.first;
-      }
-    }
-    std::cout << "- mean " << label << " of " << a << " below " << b
-              << (margin ? " by more than one standard deviation" : "") << ": " << count
-              << " of " << all.size() << " levels";
-    if (count < static_cast<int>(all.size()))
-    {
-      std::cout << " (not at" << failed.str() << ")";
-    }
-    std::cout << "\n";
-  };
   std::cout << "\n";
-  below("Optimized", "Paper", true);
-  below("Relaxed", "ContinuousPoissonDisk", false);
-  below("Relaxed", "ContinuousPoissonDisk", false, &Stats::L, "L(g)");
-  below("Relaxed", "PoissonDisk", false, &Stats::L, "L(g)");
-  below("Paper", "ContinuousPoissonDisk", false);
-  below("Relaxed", "WhiteNoise", false);
-  below("Paper", "WhiteNoise", false);
+  PrintBelow(all, "Optimized", "Paper", true);
+  PrintBelow(all, "Relaxed", "ContinuousPoissonDisk", false);
+  PrintBelow(all, "Relaxed", "ContinuousPoissonDisk", false, &Stats::L, "L(g)");
+  PrintBelow(all, "Relaxed", "PoissonDisk", false, &Stats::L, "L(g)");
+  PrintBelow(all, "Paper", "ContinuousPoissonDisk", false);
+  PrintBelow(all, "Relaxed", "WhiteNoise", false);
+  PrintBelow(all, "Paper", "WhiteNoise", false);
   PrintProfiles(firstSeed);
   return 0;
 }

@@ -1,46 +1,47 @@
 // SPDX-FileCopyrightText: Copyright (c) 2025-2026 the BlueNoiseSampling contributors
 // SPDX-License-Identifier: BSD-3-Clause
 // bluenoise-sample: the project's main job. Samples a volume by importance
-// with vtkErrorDiffusionSampler and writes the points as a .vtp, the blue-noise
-// spectrum of a uniform-density run with the same number of points and
-// parameters (vtkBlueNoiseSpectrum) as CSV, and two pictures: the points
-// rendered off screen and the spectrum plotted (see --help).
+// with vtkErrorDiffusionSampler and writes the points (.vtp, .csv or .ply),
+// the blue-noise spectrum of a uniform-density run with the same number of
+// points and parameters (vtkBlueNoiseSpectrum) as CSV, and two pictures: the
+// points rendered off screen and the spectrum plotted (see --help).
 //
-//   bluenoise-sample [VOLUME] [--output DIR] [--points N | --scale S]
-//                    [--array NAME] [--seed K] [--parameters paper|fixed|optimized|FILE]
-//                    [--spectrum-grid L] [--no-pictures]
-//
-// VOLUME: .vti, .nii / .nii.gz, .nrrd / .nhdr or .mhd / .mha. Without one, the
-// MRI brain ch2bet.nii.gz of Debian's mricron-data is used when installed,
-// else the small volume shipped in Data/.
+// The steps, in order: options; the input checked (its header against the
+// file, the parameter file); the output folder proven writable; the display;
+// the volume read (or, for readers that read sub-extents, streamed in
+// z-slabs by the sampler); sampling; the spectrum; every file written under a
+// temporary name, and all renamed at the end, so a failed run leaves an
+// existing output folder as it was.
+#include "bluenoise_messages.h"
+#include "bluenoise_options.h"
+#include "bluenoise_output.h"
 #include "bluenoise_pictures.h"
-#include "bluenoise_xml_reader.h"
+#include "bluenoise_volume.h"
 #include "vtkBlueNoiseSpectrum.h"
+#include "vtkErrorDiffusionParameterTable.h"
 #include "vtkErrorDiffusionSampler.h"
 
+#include "vtkAlgorithm.h"
 #include "vtkDataArray.h"
 #include "vtkFieldData.h"
 #include "vtkFloatArray.h"
 #include "vtkImageData.h"
-#include "vtkImageReader2.h"
-#include "vtkMetaImageReader.h"
-#include "vtkNIFTIImageReader.h"
 #include "vtkNew.h"
-#include "vtkNrrdReader.h"
 #include "vtkPointData.h"
 #include "vtkPolyData.h"
 #include "vtkSmartPointer.h"
 #include "vtkTable.h"
 #include "vtkTimerLog.h"
-#include "vtkXMLPolyDataWriter.h"
 #include "vtksys/SystemTools.hxx"
 
 #include <algorithm>
+#include <cerrno>
 #include <cmath>
 #include <cstdio>
-#include <cstdlib>
+#include <cstring>
 #include <fstream>
 #include <iostream>
+#include <new>
 #include <string>
 #include <vector>
 
@@ -50,136 +51,162 @@
 
 namespace
 {
+const char* const Program = "bluenoise-sample";
 const char* const DefaultVolume = "/usr/share/mricron/templates/ch2bet.nii.gz";
 
-const int DefaultSpectrumGrid = 128;
-
-void Usage(std::ostream& os)
+struct Settings
 {
-  os << "usage: bluenoise-sample [VOLUME] [--output DIR] [--points N | --scale S]\n"
-        "                        [--array NAME] [--seed K] [--parameters paper|fixed|optimized|FILE]\n"
-        "                        [--spectrum-grid L] [--no-pictures]\n"
-        "  VOLUME        .vti, .nii(.gz), .nrrd/.nhdr or .mhd/.mha (default: the MRI brain\n"
-        "                " << DefaultVolume << ",\n"
-        "                else Data/brain-small.vti)\n"
-        "  --output DIR  where to write the files below (default: bluenoise-output)\n"
-        "  --points N    expected number of points (default 100000)\n"
-        "  --scale S     DensityScale instead of --points\n"
-        "  --array NAME  point array to sample by (default: the active scalars)\n"
-        "  --seed K      seed of the threshold noise (default 0)\n"
-        "  --parameters  diffusion parameters: paper (Table 1, default), fixed, optimized,\n"
-        "                or a parameter table file\n"
-        "  --spectrum-grid L\n"
-        "                edge of the cubic grid of the uniform-density run (default "
-     << DefaultSpectrumGrid << ")\n"
-        "  --no-pictures skip samples.png and spectrum.png (no display or OpenGL needed)\n"
-        "\n"
-        "The volume's array is mapped to a density by its scalar range, times the scale\n"
-        "that makes the expected number of points N (the sum of the densities) equal to\n"
-        "--points. Files written to DIR:\n"
-        "  samples.vtp   the N points (vertices at voxel centres, every input array, Density)\n"
-        "  spectrum.csv  vtkBlueNoiseSpectrum of a uniform-density run at the same point\n"
-        "                count: a constant density g = n / L^3 (n: the points drawn above,\n"
-        "                g clamped to (0, 0.5]) on an L^3 grid, L = --spectrum-grid (128:\n"
-        "                the FFT takes a fraction of a second), sampled with the same seed\n"
-        "                and parameters. Header line, then one row per radial shell:\n"
-        "                Frequency (cycles per voxel), RadialPower, Anisotropy,\n"
-        "                AnisotropyDB, SRAPS_XY, SRAPS_XZ, SRAPS_YZ, ShellCount\n"
-        "  metrics.csv   the scalar metrics of that spectrum, one 'Metric,Value' row each:\n"
-        "                NumberOfPoints, Density (g), PrincipalFrequency (f_g),\n"
-        "                LowFrequencyRatio (L), SymmetryCorrelation, Symmetry (S),\n"
-        "                TargetValue (T), Realisations, GridDimensions (space separated),\n"
-        "                then the run's Seed and Parameters\n"
-        "  samples.png   the points rendered off screen: all in 3D, and an axial and a\n"
-        "                sagittal slab through the centre, coloured by the sampled array\n"
-        "  spectrum.png  RadialPower and Anisotropy (dB) against Frequency, f_g marked\n"
-        "The pictures need OpenGL through an X display: without DISPLAY run the program\n"
-        "under xvfb-run -a (scripts/main.sh does), or pass --no-pictures. When they are\n"
-        "asked for and rendering is impossible, the program stops with a message before\n"
-        "sampling (exit status 1); should rendering fail later, the other files are\n"
-        "still written and the exit status is 1.\n"
-        "The last line printed is the summary\n"
-        "  voxels=... points=... expected=... seconds=...\n"
-        "(expected: the sum of the densities; seconds: the importance sampling alone).\n";
+  std::string Volume;
+  std::string OutputDir = "bluenoise-output";
+  std::string SamplesName = "samples.vtp";
+  std::string ArrayName;
+  std::string Parameters = "paper";
+  long long Points = 100000;
+  double Scale = -1.0; // unset: the budget --points
+  int Seed = 0;
+  int SpectrumGrid = 128;
+  double SlabMegabytes = 64.0;
+  bool NoPictures = false;
+  bool VoxelSpace = false;
+};
+
+// What one sampling run produced.
+struct Run
+{
+  vtkSmartPointer<vtkPolyData> Samples;
+  vtkSmartPointer<vtkTable> Spectrum;
+  double UniformDensity = 0.0;
+  double Seconds = 0.0;
+  int Slabs = 1;
+};
+
+const char* const Footer =
+  "The volume's array is mapped to a density by its scalar range, times the scale\n"
+  "that makes the expected number of points (the sum of the densities) --points;\n"
+  "the sampler solves it (a budget above what the volume holds is reported). Files\n"
+  "written to DIR, all at the end (a failed run leaves DIR as it was):\n"
+  "  samples.vtp   the points (vertices at voxel centers, every input array, Density);\n"
+  "                --samples NAME.csv or NAME.ply writes CSV or binary PLY instead\n"
+  "  spectrum.csv  vtkBlueNoiseSpectrum of a uniform-density run at the same point\n"
+  "                count: a constant density g = n / L^3 (n: the points drawn above,\n"
+  "                g clamped to (0, 0.5]) on an L^3 grid, L = --spectrum-grid, sampled\n"
+  "                with the same seed and parameters. Header line, then one row per\n"
+  "                radial shell: Frequency (cycles per voxel), RadialPower, Anisotropy,\n"
+  "                AnisotropyDB, SRAPS_XY, SRAPS_XZ, SRAPS_YZ, ShellCount\n"
+  "  metrics.csv   the scalar metrics of that spectrum, one 'Metric,Value' row each:\n"
+  "                NumberOfPoints, Density (g), PrincipalFrequency (f_g),\n"
+  "                LowFrequencyRatio (L), SymmetryCorrelation, Symmetry (S),\n"
+  "                TargetValue (T), Realisations, GridDimensions (space separated),\n"
+  "                then the run's Seed and Parameters\n"
+  "  samples.png   the points rendered off screen: all in 3D, and an axial and a\n"
+  "                sagittal slab through the center, colored by the sampled array\n"
+  "  spectrum.png  RadialPower and Anisotropy (dB) against Frequency, f_g marked\n"
+  "Frames: NIfTI volumes are sampled in the file's world frame (sform, else qform;\n"
+  "millimetres) unless --voxel-space; other formats in their origin and spacing.\n"
+  "Streaming: raw MetaImage, raw NRRD and VTI with raw appended data are read in\n"
+  "z-slabs of about --slab-size MiB, so memory is one slab plus the points; NIfTI,\n"
+  "compressed and ASCII files are read whole.\n"
+  "The pictures need OpenGL through an X display: without DISPLAY run the program\n"
+  "under xvfb-run -a (scripts/main.sh does), or pass --no-pictures.\n"
+  "Every failure exits with status 1 (2 for a bad option) and a message.\n"
+  "The last line printed is the summary\n"
+  "  voxels=... points=... expected=... seconds=... frame=...\n"
+  "(expected: the sum of the densities; seconds: the importance sampling alone;\n"
+  "frame: sform, qform, voxel or file).";
+
+int ParseOptions(int argc, char* argv[], Settings& s)
+{
+  bluenoise::CommandLine cli(Program, "Blue-noise importance sampling of a volume (the main job).");
+  const std::string defaultVolume = std::string("volume to sample: ") +
+    bluenoise::VolumeSuffixes() + " (default: " + DefaultVolume + " when installed, else " +
+    "Data/brain-small.vti)";
+  cli.AddPositional("volume", s.Volume, defaultVolume);
+  cli.AddText("--output", s.OutputDir, "DIR", "output folder");
+  cli.AddText("--samples", s.SamplesName, "NAME", "file name of the points in the output folder; "
+                                          "its extension (.vtp, .csv, .ply) chooses the format");
+  cli.AddInteger("--points", s.Points, 1, 1000000000000LL, "expected number of points");
+  cli.AddReal("--scale", s.Scale, 0.0, 1.0e6, "DensityScale instead of --points");
+  cli.Exclude("--points", "--scale");
+  cli.AddText("--array", s.ArrayName, "NAME", "point array to sample by (default: the active scalars, "
+                                      "else the first array)");
+  cli.AddInteger("--seed", s.Seed, 0, 2147483647, "seed of the threshold noise");
+  cli.AddText("--parameters", s.Parameters, "SET|FILE",
+    "diffusion parameters: paper (Table 1), fixed, optimized, or a parameter table file");
+  cli.AddInteger("--spectrum-grid", s.SpectrumGrid, 8, 512,
+    "edge L of the cubic grid of the uniform-density run");
+  cli.AddReal("--slab-size", s.SlabMegabytes, 0.0, 1.0e6,
+    "MiB per z-slab when a volume is streamed", true);
+  cli.AddFlag("--voxel-space", s.VoxelSpace, "NIfTI: sample in voxel space, not the world frame");
+  cli.AddFlag("--no-pictures", s.NoPictures,
+    "skip samples.png and spectrum.png (no display or OpenGL needed)");
+  cli.SetFooter(Footer);
+  const int status = cli.Parse(argc, argv);
+  if (status < 0 && !bluenoise::IsPointFileName(s.SamplesName))
+  {
+    std::cerr << Program << ": --samples: '" << s.SamplesName
+              << "' does not end in .vtp, .csv or .ply\n";
+    return 2;
+  }
+  if (status < 0 && s.SamplesName.find('/') != std::string::npos)
+  {
+    std::cerr << Program << ": --samples: '" << s.SamplesName
+              << "' must be a file name (it goes into --output)\n";
+    return 2;
+  }
+  return status;
 }
 
-bool EndsWith(const std::string& s, const std::string& suffix)
+bool IsNamedSet(const std::string& parameters)
 {
-  return s.size() >= suffix.size() &&
-    vtksys::SystemTools::LowerCase(s.substr(s.size() - suffix.size())) == suffix;
+  return parameters == "paper" || parameters == "fixed" || parameters == "optimized";
 }
 
-// Sum over the voxels of the density the sampler will use (scalar-range
-// mapping of component 0, times `scale`, clamped to [0, 1]); `occupied`, when
-// given, receives the number of voxels of positive density.
-double ExpectedCount(vtkDataArray* scalars, double scale, vtkIdType* occupied = nullptr)
+// The parameter file of --parameters, read once here so that a bad one
+// stops the run before anything else.
+bool CheckParameters(const std::string& parameters, std::string& error)
 {
-  vtkIdType positive = 0;
-  double range[2];
-  scalars->GetFiniteRange(range, 0);
-  const double inverseWidth = range[1] > range[0] ? 1.0 / (range[1] - range[0]) : 1.0;
-  double sum = 0.0;
-  const vtkIdType n = scalars->GetNumberOfTuples();
-  for (vtkIdType i = 0; i < n; ++i)
+  if (IsNamedSet(parameters))
   {
-    const double g = scale * (scalars->GetComponent(i, 0) - range[0]) * inverseWidth;
-    sum += g > 0.0 ? std::min(g, 1.0) : 0.0;
-    positive += g > 0.0 ? 1 : 0;
+    return true;
   }
-  if (occupied)
+  vtkErrorDiffusionParameterTable table;
+  std::string why;
+  if (!vtkErrorDiffusionParameterTable::ReadFile(parameters, table, why))
   {
-    *occupied = positive;
+    error = "--parameters: " + why;
+    return false;
   }
-  return sum;
+  return true;
 }
 
-vtkSmartPointer<vtkImageData> ReadVolume(const std::string& path, std::string& error)
+// The density array: --array, else the active scalars, else the first array;
+// it must be numeric.
+bool ChooseArray(vtkImageData* image, const std::string& requested, std::string& name,
+  std::string& error)
 {
-  vtkSmartPointer<vtkAlgorithm> reader;
-  if (EndsWith(path, ".vti"))
+  vtkPointData* pd = image->GetPointData();
+  vtkAbstractArray* array = !requested.empty() ? pd->GetAbstractArray(requested.c_str())
+    : pd->GetScalars()                         ? pd->GetScalars()
+                                               : pd->GetAbstractArray(0);
+  if (!array)
   {
-    auto r = bluenoise::NewXMLImageDataReader();
-    r->SetFileName(path.c_str());
-    reader = r;
+    error = "no point array '" + requested + "'; the arrays are:";
+    for (int a = 0; a < pd->GetNumberOfArrays(); ++a)
+    {
+      const char* n = pd->GetArrayName(a);
+      error += std::string(" '") + (n ? n : "") + "'";
+    }
+    return false;
   }
-  else if (EndsWith(path, ".nii") || EndsWith(path, ".nii.gz") || EndsWith(path, ".hdr"))
+  const std::string shown = array->GetName() ? array->GetName() : "(unnamed)";
+  if (!vtkDataArray::SafeDownCast(array))
   {
-    auto r = vtkSmartPointer<vtkNIFTIImageReader>::New();
-    r->SetFileName(path.c_str());
-    reader = r;
+    error = "the point array '" + shown + "' is not numeric (" + array->GetClassName() +
+      "); choose a numeric one with --array";
+    return false;
   }
-  else if (EndsWith(path, ".nrrd") || EndsWith(path, ".nhdr"))
-  {
-    auto r = vtkSmartPointer<vtkNrrdReader>::New();
-    r->SetFileName(path.c_str());
-    reader = r;
-  }
-  else if (EndsWith(path, ".mhd") || EndsWith(path, ".mha"))
-  {
-    auto r = vtkSmartPointer<vtkMetaImageReader>::New();
-    r->SetFileName(path.c_str());
-    reader = r;
-  }
-  else
-  {
-    error = "unknown volume format (expected .vti, .nii, .nii.gz, .nrrd, .nhdr, .mhd, .mha): " + path;
-    return nullptr;
-  }
-  if (!vtksys::SystemTools::FileExists(path, true))
-  {
-    error = "no such file: " + path;
-    return nullptr;
-  }
-  reader->Update();
-  auto image = vtkImageData::SafeDownCast(reader->GetOutputDataObject(0));
-  if (!image || image->GetNumberOfPoints() == 0 || !image->GetPointData()->GetNumberOfArrays())
-  {
-    error = "could not read a volume with point data from " + path;
-    return nullptr;
-  }
-  auto copy = vtkSmartPointer<vtkImageData>::New();
-  copy->ShallowCopy(image);
-  return copy;
+  name = array->GetName() ? array->GetName() : "";
+  return true;
 }
 
 // The parameter set of --parameters (paper, fixed, optimized, or a file).
@@ -204,8 +231,8 @@ void SetParameters(vtkErrorDiffusionSampler* sampler, const std::string& paramet
 // (clamped to (0, 0.5]) on an L^3 grid, sampled like the volume (same seed,
 // same parameters), then measured by vtkBlueNoiseSpectrum on the sampler's
 // grid (its SamplingGrid field data).
-vtkSmartPointer<vtkTable> UniformSpectrum(
-  vtkIdType points, int edge, int seed, const std::string& parameters, double& density)
+vtkSmartPointer<vtkTable> UniformSpectrum(vtkIdType points, int edge, int seed,
+  const std::string& parameters, double& density, std::string& error)
 {
   const double voxels = static_cast<double>(edge) * edge * edge;
   density = std::min(std::max(static_cast<double>(points) / voxels, 1.0 / voxels), 0.5);
@@ -220,12 +247,24 @@ vtkSmartPointer<vtkTable> UniformSpectrum(
   vtkNew<vtkErrorDiffusionSampler> sampler;
   sampler->SetInputData(cube);
   sampler->SetDensityMappingToIdentity();
+  sampler->UseNumberOfPointsOff(); // the density is the value itself
   sampler->SetSeed(seed);
   SetParameters(sampler, parameters);
   vtkNew<vtkBlueNoiseSpectrum> spectrum;
   spectrum->SetInputConnection(sampler->GetOutputPort());
   spectrum->GenerateSpectrumImageOff();
+  bluenoise::VTKMessages samplerMessages, spectrumMessages;
+  samplerMessages.Attach(sampler);
+  spectrumMessages.Attach(spectrum);
   spectrum->Update();
+  if (spectrum->GetOutput()->GetNumberOfRows() == 0)
+  {
+    const auto& errors =
+      samplerMessages.Errors.empty() ? spectrumMessages.Errors : samplerMessages.Errors;
+    error = "the spectrum of the uniform-density run (" + std::to_string(points) +
+      " points) failed: " + (errors.empty() ? std::string("no rows") : errors.front());
+    return nullptr;
+  }
   auto table = vtkSmartPointer<vtkTable>::New();
   table->ShallowCopy(spectrum->GetOutput());
   return table;
@@ -311,252 +350,248 @@ bool WriteMetricsCSV(
   return static_cast<bool>(out);
 }
 
-std::string FileName(const std::string& path)
+
+// The sampler on the volume: read whole, or streamed in z-slabs of about
+// --slab-size MiB from a reader that reads sub-extents.
+bool Sample(const bluenoise::Volume& volume, const Settings& s, const std::string& arrayName,
+  Run& run, std::string& error)
 {
-  return vtksys::SystemTools::GetFilenameName(path);
+  vtkNew<vtkErrorDiffusionSampler> sampler;
+  if (volume.Streamable())
+  {
+    const double bytes = static_cast<double>(volume.Voxels) * volume.BytesPerVoxel;
+    const int layers = volume.WholeExtent[5] - volume.WholeExtent[4] + 1;
+    run.Slabs = static_cast<int>(std::min<double>(
+      std::min(layers, 65536), std::max(1.0, std::ceil(bytes / (s.SlabMegabytes * 1048576.0)))));
+    sampler->SetInputConnection(volume.Reader->GetOutputPort());
+    sampler->SetNumberOfSlabs(run.Slabs);
+  }
+  else
+  {
+    sampler->SetInputData(volume.Image);
+  }
+  if (!arrayName.empty())
+  {
+    sampler->SetInputArrayToProcess(
+      0, 0, 0, vtkDataObject::FIELD_ASSOCIATION_POINTS, arrayName.c_str());
+  }
+  sampler->SetDensityMappingToScalarRange();
+  sampler->SetSeed(s.Seed);
+  SetParameters(sampler, s.Parameters);
+  if (s.Scale >= 0.0)
+  {
+    sampler->UseNumberOfPointsOff();
+    sampler->SetDensityScale(s.Scale);
+  }
+  else
+  {
+    sampler->SetNumberOfPoints(static_cast<vtkIdType>(s.Points));
+  }
+  bluenoise::VTKMessages messages;
+  messages.Attach(sampler);
+  if (volume.Reader)
+  {
+    messages.Attach(volume.Reader);
+  }
+  bluenoise::ProgressBar progress;
+  progress.Attach(sampler, "sampling");
+  vtkNew<vtkTimerLog> timer;
+  timer->StartTimer();
+  try
+  {
+    sampler->Update();
+  }
+  catch (const std::bad_alloc&)
+  {
+    messages.Errors.push_back("out of memory while sampling");
+  }
+  timer->StopTimer();
+  run.Seconds = timer->GetElapsedTime();
+  for (const std::string& warning : messages.Warnings)
+  {
+    std::cerr << Program << ": warning: " << warning << "\n";
+  }
+  run.Samples = sampler->GetOutput();
+  if (!messages.Errors.empty() || run.Samples->GetNumberOfPoints() == 0)
+  {
+    error = volume.Path + ": " +
+      (messages.Errors.empty() ? std::string("no samples were drawn (the density is zero everywhere)")
+                               : messages.Errors.front());
+    return false;
+  }
+  return true;
+}
+
+std::string SpectrumTitle(const Settings& s, const Run& run)
+{
+  vtkDataArray* count = run.Spectrum->GetFieldData()->GetArray("NumberOfPoints");
+  char title[256];
+  std::snprintf(title, sizeof(title),
+    "Spectrum of a uniform-density run: g = %.4g on %d^3 voxels, %lld points, seed %d, %s "
+    "parameters",
+    run.UniformDensity, s.SpectrumGrid,
+    static_cast<long long>(count ? std::llround(count->GetComponent(0, 0)) : 0), s.Seed,
+    IsNamedSet(s.Parameters) ? s.Parameters.c_str() : "custom");
+  return title;
+}
+
+// samples.png and spectrum.png, to temporary names in the output folder.
+bool WritePictures(const bluenoise::PictureSession& session, bluenoise::OutputFolder& output,
+  const Settings& s, const Run& run, const std::string& colorArray, std::string& error)
+{
+  bluenoise::SamplesPicture picture;
+  picture.ColorArray = colorArray;
+  picture.Caption = vtksys::SystemTools::GetFilenameName(s.Volume);
+  // About one mean point spacing, from the points' bounding box.
+  double b[6];
+  run.Samples->GetBounds(b);
+  const double box = std::max(1e-300, (b[1] - b[0]) * (b[3] - b[2]) * (b[5] - b[4]));
+  picture.SlabThickness =
+    std::cbrt(box / static_cast<double>(run.Samples->GetNumberOfPoints()));
+  if (!(picture.SlabThickness > 0.0))
+  {
+    picture.SlabThickness = 1.0;
+  }
+  bluenoise::SpectrumPlot plot;
+  plot.Title = SpectrumTitle(s, run);
+  std::string why;
+  if (!bluenoise::WriteSamplesPicture(
+        session, run.Samples, picture, output.Temporary("samples.png"), why))
+  {
+    error = "samples.png: " + why;
+    return false;
+  }
+  if (!bluenoise::WriteSpectrumPlot(
+        session, run.Spectrum, plot, output.Temporary("spectrum.png"), why))
+  {
+    error = "spectrum.png: " + why;
+    return false;
+  }
+  return true;
+}
+
+// Every file under a temporary name; nothing is final until Commit().
+bool WriteFiles(const bluenoise::PictureSession& session, bluenoise::OutputFolder& output,
+  const Settings& s, const Run& run, const std::string& colorArray, std::string& error)
+{
+  if (!bluenoise::WritePoints(
+        run.Samples, output.Temporary(s.SamplesName), s.SamplesName, error))
+  {
+    error = output.Final(s.SamplesName) + ": " + error;
+    return false;
+  }
+  errno = 0;
+  if (!WriteSpectrumCSV(run.Spectrum, output.Temporary("spectrum.csv")) ||
+    !WriteMetricsCSV(run.Spectrum, s.Seed, s.Parameters, output.Temporary("metrics.csv")))
+  {
+    error = "cannot write spectrum.csv or metrics.csv in " + s.OutputDir + ": " +
+      (errno ? std::strerror(errno) : "write failed");
+    return false;
+  }
+  return s.NoPictures || WritePictures(session, output, s, run, colorArray, error);
+}
+
+void PrintResults(const Settings& s, const bluenoise::OutputFolder& output,
+  const bluenoise::Volume& volume, const Run& run)
+{
+  static const char* const frames[][2] = { { "sform", "the NIfTI sform (world, millimetres)" },
+    { "qform", "the NIfTI qform (world, millimetres)" },
+    { "voxel", "voxel space (origin 0, spacing from the header)" },
+    { "file", "the file's origin and spacing" } };
+  std::cout << "input: " << s.Volume << " (" << volume.Format
+            << (volume.Streamable() ? ", streamed in " + std::to_string(run.Slabs) + " z-slabs" : "")
+            << ")\n";
+  for (const auto& frame : frames)
+  {
+    if (volume.Frame == frame[0])
+    {
+      std::cout << "frame: " << frame[1] << "\n";
+    }
+  }
+  std::cout << "points: " << output.Final(s.SamplesName) << "\n";
+  std::cout << "spectrum: " << output.Final("spectrum.csv") << " (uniform density g="
+            << run.UniformDensity << " on " << s.SpectrumGrid << "^3 voxels)\n";
+  std::cout << "metrics: " << output.Final("metrics.csv") << "\n";
+  if (!s.NoPictures)
+  {
+    std::cout << "picture: " << output.Final("samples.png") << "\n";
+    std::cout << "plot: " << output.Final("spectrum.png") << "\n";
+  }
+  vtkDataArray* expected = run.Samples->GetFieldData()->GetArray("ExpectedNumberOfPoints");
+  std::cout << "voxels=" << volume.Voxels << " points=" << run.Samples->GetNumberOfPoints()
+            << " expected="
+            << static_cast<long long>(expected ? std::llround(expected->GetComponent(0, 0)) : 0)
+            << " seconds=" << run.Seconds << " frame=" << volume.Frame << std::endl;
+}
+
+int Fail(const std::string& message)
+{
+  std::cerr << Program << ": " << message << "\n";
+  return 1;
 }
 }
 
 int main(int argc, char* argv[])
 {
-  std::string volume;
-  std::string outputDir = "bluenoise-output";
-  std::string arrayName;
-  std::string parameters = "paper";
-  double points = 100000.0;
-  double scale = -1.0;
-  int seed = 0;
-  int spectrumGrid = DefaultSpectrumGrid;
-  bool pictures = true;
-  for (int i = 1; i < argc; ++i)
+  Settings s;
+  const int parsed = ParseOptions(argc, argv, s);
+  if (parsed >= 0)
   {
-    const std::string arg = argv[i];
-    auto value = [&](const char* flag) -> std::string {
-      if (i + 1 >= argc)
-      {
-        std::cerr << "bluenoise-sample: " << flag << " needs a value\n";
-        std::exit(2);
-      }
-      return argv[++i];
-    };
-    if (arg == "-h" || arg == "--help")
-    {
-      Usage(std::cout);
-      return 0;
-    }
-    else if (arg == "--output")
-    {
-      outputDir = value("--output");
-    }
-    else if (arg == "--points")
-    {
-      points = std::atof(value("--points").c_str());
-    }
-    else if (arg == "--scale")
-    {
-      scale = std::atof(value("--scale").c_str());
-    }
-    else if (arg == "--array")
-    {
-      arrayName = value("--array");
-    }
-    else if (arg == "--seed")
-    {
-      seed = std::atoi(value("--seed").c_str());
-    }
-    else if (arg == "--parameters")
-    {
-      parameters = value("--parameters");
-    }
-    else if (arg == "--spectrum-grid")
-    {
-      spectrumGrid = std::atoi(value("--spectrum-grid").c_str());
-    }
-    else if (arg == "--no-pictures")
-    {
-      pictures = false;
-    }
-    else if (!arg.empty() && arg[0] == '-')
-    {
-      std::cerr << "bluenoise-sample: unknown option " << arg << "\n";
-      Usage(std::cerr);
-      return 2;
-    }
-    else
-    {
-      volume = arg;
-    }
+    return parsed;
   }
-  if (volume.empty())
+  if (s.Volume.empty())
   {
-    volume = vtksys::SystemTools::FileExists(DefaultVolume, true)
+    s.Volume = vtksys::SystemTools::FileExists(DefaultVolume, true)
       ? DefaultVolume
       : std::string(BLUENOISE_DATA_DIR) + "/brain-small.vti";
   }
-  if (!(points > 0.0) && !(scale >= 0.0))
-  {
-    std::cerr << "bluenoise-sample: --points must be > 0\n";
-    return 2;
-  }
-  if (spectrumGrid < 8 || spectrumGrid > 512)
-  {
-    std::cerr << "bluenoise-sample: --spectrum-grid must be in [8, 512]\n";
-    return 2;
-  }
 
-  // Fail before the work, not after it, when the pictures cannot be made.
-  bluenoise::PictureSession session;
-  if (pictures)
-  {
-    std::string why;
-    if (!session.Start(why))
-    {
-      std::cerr << "bluenoise-sample: cannot render the pictures: " << why << "\n";
-      return 1;
-    }
-  }
-
+  // The inputs first, then the output folder, then the display.
   std::string error;
-  auto image = ReadVolume(volume, error);
-  if (!image)
+  bluenoise::Volume volume;
+  if (!bluenoise::CheckVolumeFile(s.Volume, volume, error) || !CheckParameters(s.Parameters, error))
   {
-    std::cerr << "bluenoise-sample: " << error << "\n";
-    return 1;
+    return Fail(error);
+  }
+  bluenoise::OutputFolder output;
+  if (!output.Open(s.OutputDir, error))
+  {
+    return Fail(error);
+  }
+  bluenoise::PictureSession session;
+  if (!s.NoPictures && !session.Start(error))
+  {
+    return Fail("cannot render the pictures: " + error);
   }
 
-  vtkNew<vtkErrorDiffusionSampler> sampler;
-  sampler->SetInputData(image);
-  if (!arrayName.empty())
+  bluenoise::VolumeOptions options;
+  options.VoxelSpace = s.VoxelSpace;
+  options.AllowStreaming = true;
+  std::string arrayName;
+  if (!bluenoise::ReadVolume(options, volume, error))
   {
-    if (!image->GetPointData()->GetArray(arrayName.c_str()))
-    {
-      std::cerr << "bluenoise-sample: no point array '" << arrayName << "' in " << volume << "\n";
-      return 1;
-    }
-    sampler->SetInputArrayToProcess(
-      0, 0, 0, vtkDataObject::FIELD_ASSOCIATION_POINTS, arrayName.c_str());
+    return Fail(error);
   }
-  else if (!image->GetPointData()->GetScalars())
+  if (!ChooseArray(volume.Image, s.ArrayName, arrayName, error))
   {
-    image->GetPointData()->SetActiveScalars(image->GetPointData()->GetArrayName(0));
-  }
-  sampler->SetDensityMappingToScalarRange();
-  sampler->SetSeed(seed);
-  SetParameters(sampler, parameters);
-
-  // The point budget (the module solves the density scale), or a scale.
-  vtkDataArray* scalars = arrayName.empty() ? image->GetPointData()->GetScalars()
-                                            : image->GetPointData()->GetArray(arrayName.c_str());
-  if (scale >= 0.0)
-  {
-    sampler->UseNumberOfPointsOff();
-    sampler->SetDensityScale(scale);
-  }
-  else
-  {
-    sampler->SetNumberOfPoints(static_cast<vtkIdType>(std::llround(points)));
-  }
-  vtkIdType occupied = 0;
-  ExpectedCount(scalars, 1.0, &occupied);
-
-  vtkNew<vtkTimerLog> timer;
-  timer->StartTimer();
-  sampler->Update();
-  timer->StopTimer();
-  vtkPolyData* samples = sampler->GetOutput();
-  if (samples->GetNumberOfPoints() == 0)
-  {
-    std::cerr << "bluenoise-sample: no samples were drawn from " << volume << "\n";
-    return 1;
+    return Fail(s.Volume + ": " + error);
   }
 
-  vtksys::SystemTools::MakeDirectory(outputDir);
-  const std::string vtp = outputDir + "/samples.vtp";
-  vtkNew<vtkXMLPolyDataWriter> writer;
-  writer->SetInputData(samples);
-  writer->SetFileName(vtp.c_str());
-  // Inline binary (base64, compressed), not appended: appended data cannot be
-  // read by VTK < 9.3.1 with Expat >= 2.6.0, e.g. Debian's ParaView 5.11 (see
-  // bluenoise_xml_reader.h), whereas inline data is plain XML every VTK reads.
-  writer->SetDataModeToBinary();
-  writer->SetCompressorTypeToZLib();
-  if (!writer->Write())
+  Run run;
+  if (!Sample(volume, s, arrayName, run, error))
   {
-    std::cerr << "bluenoise-sample: cannot write " << vtp << "\n";
-    return 1;
+    return Fail(error);
   }
-  std::cout << "input: " << volume << "\n";
-  std::cout << "points: " << vtp << "\n";
-
-  // The spectrum of a uniform-density run at the same number of points.
-  double uniformDensity = 0.0;
-  auto spectrum =
-    UniformSpectrum(samples->GetNumberOfPoints(), spectrumGrid, seed, parameters, uniformDensity);
-  if (spectrum->GetNumberOfRows() == 0)
+  run.Spectrum = UniformSpectrum(run.Samples->GetNumberOfPoints(), s.SpectrumGrid, s.Seed,
+    s.Parameters, run.UniformDensity, error);
+  if (!run.Spectrum)
   {
-    std::cerr << "bluenoise-sample: the spectrum of the uniform-density run failed\n";
-    return 1;
+    return Fail(error);
   }
-  const std::string csv = outputDir + "/spectrum.csv";
-  const std::string metrics = outputDir + "/metrics.csv";
-  if (!WriteSpectrumCSV(spectrum, csv) || !WriteMetricsCSV(spectrum, seed, parameters, metrics))
+  if (!WriteFiles(session, output, s, run, arrayName, error) || !output.Commit(error))
   {
-    std::cerr << "bluenoise-sample: cannot write " << csv << " or " << metrics << "\n";
-    return 1;
+    return Fail(error + " (nothing in " + s.OutputDir + " was changed)");
   }
-  std::cout << "spectrum: " << csv << " (uniform density g=" << uniformDensity << " on "
-            << spectrumGrid << "^3 voxels)\n";
-  std::cout << "metrics: " << metrics << "\n";
-
-  int status = 0;
-  if (pictures)
-  {
-    const std::string samplesPng = outputDir + "/samples.png";
-    const std::string spectrumPng = outputDir + "/spectrum.png";
-    bluenoise::SamplesPicture picture;
-    picture.ColorArray = scalars->GetName() ? scalars->GetName() : "";
-    picture.Caption = FileName(volume);
-    // About one mean point spacing: (occupied volume / points)^(1/3).
-    double spacing[3];
-    image->GetSpacing(spacing);
-    const double voxelVolume = std::abs(spacing[0] * spacing[1] * spacing[2]);
-    picture.SlabThickness =
-      std::max(std::cbrt(voxelVolume * static_cast<double>(occupied) /
-                 static_cast<double>(samples->GetNumberOfPoints())),
-        std::max({ std::abs(spacing[0]), std::abs(spacing[1]), std::abs(spacing[2]) }));
-    bluenoise::SpectrumPlot plot;
-    char title[256];
-    std::snprintf(title, sizeof(title), "Spectrum of a uniform-density run: g = %.4g on %d^3 voxels, %lld points, seed %d, %s parameters",
-      uniformDensity, spectrumGrid,
-      static_cast<long long>(spectrum->GetFieldData()->GetArray("NumberOfPoints")
-          ? std::llround(spectrum->GetFieldData()->GetArray("NumberOfPoints")->GetComponent(0, 0))
-          : 0),
-      seed, parameters == "paper" || parameters == "fixed" || parameters == "optimized" ? parameters.c_str() : "custom");
-    plot.Title = title;
-    if (bluenoise::WriteSamplesPicture(session, samples, picture, samplesPng, error))
-    {
-      std::cout << "picture: " << samplesPng << "\n";
-    }
-    else
-    {
-      std::cerr << "bluenoise-sample: samples.png: " << error << "\n";
-      status = 1;
-    }
-    if (bluenoise::WriteSpectrumPlot(session, spectrum, plot, spectrumPng, error))
-    {
-      std::cout << "plot: " << spectrumPng << "\n";
-    }
-    else
-    {
-      std::cerr << "bluenoise-sample: spectrum.png: " << error << "\n";
-      status = 1;
-    }
-  }
-
-  const double expected =
-    samples->GetFieldData()->GetArray("ExpectedNumberOfPoints")->GetComponent(0, 0);
-  std::cout << "voxels=" << image->GetNumberOfPoints() << " points=" << samples->GetNumberOfPoints()
-            << " expected=" << static_cast<long long>(std::llround(expected))
-            << " seconds=" << timer->GetElapsedTime() << std::endl;
-  return status;
+  PrintResults(s, output, volume, run);
+  return 0;
 }

@@ -104,8 +104,10 @@ from vtkmodules.vtkCommonDataModel import vtkImageData
 from vtkmodules.vtkIOImage import vtkPNGReader, vtkPNGWriter
 
 DEFAULT_VOLUME = "/usr/share/mricron/templates/ch2bet.nii.gz"
-# The sampler's methods compared: (Method, short name).
+# The sampler's methods compared: (Method, short name); the paper's error
+# diffusion with the paper's parameters, the others with the default ones.
 METHODS = (("Relaxed Error Diffusion", "RED"), ("Error Diffusion", "ED"), ("White Noise", "WN"))
+PARAMETER_SETS = {"ED": "Paper"}
 LONG_NAMES = {"RED": "relaxed error diffusion (default)", "ED": "error diffusion (paper)",
               "WN": "white noise (hit and miss)"}
 HERE = os.path.dirname(os.path.abspath(__file__))
@@ -457,6 +459,8 @@ def main(argv=None):
                     s = sampler_ctor(Input=reader)
                     s.Scalars = ["POINTS", array]
                     s.Method = method
+                    if name in PARAMETER_SETS:
+                        s.ParameterSet = PARAMETER_SETS[name]
                     s.DensityMapping = "Transfer Function"
                     s.TransferFunction = density_tf
                     s.UseNumberOfPoints = 0

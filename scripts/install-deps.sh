@@ -8,6 +8,8 @@ set -euo pipefail
 packages=(
   # Toolchain and test tools
   build-essential cmake ninja-build pkg-config git xvfb xauth libbenchmark-dev
+  # The programs' option parser (header-only)
+  libcli11-dev
   # ParaView 5.11 SDK (with its VTK 9.2) and its Python
   paraview paraview-dev python3-paraview
   # What find_package(ParaView) needs besides paraview-dev

@@ -7,6 +7,7 @@
 #         [-DCXX_COMPILER=...] [-DBUILD_TYPE=Release]
 #         [-DPYTHON=/usr/bin/python3 -DPYTHON_DESTINATION=lib/python3/dist-packages]
 #         [-DPVPYTHON=/usr/bin/pvpython -DPLUGIN_DESTINATION=lib/paraview-5.11/plugins]
+#         [-DBINDIR=bin -DPROGRAMS=name|name|... -DVOLUME=small.vti]
 #         -P RunInstallTest.cmake
 #
 # 1. cmake --install BUILD_DIR --prefix PREFIX, and the expected files are there;
@@ -14,7 +15,10 @@
 #    BlueNoise::FiltersBlueNoise) configures against PREFIX only, builds and runs,
 #    and loads the installed library (not the build tree's);
 # 3. with PYTHON: `import bluenoise` from PREFIX works and samples;
-# 4. with PVPYTHON: the installed plugin loads in pvpython and samples.
+# 4. with PVPYTHON: the installed plugin loads in pvpython and samples;
+# 5. with PROGRAMS: each is in BINDIR, loads the installed library and prints
+#    its --help with LD_LIBRARY_PATH unset (its RUNPATH is relative to the
+#    binary); bluenoise-sample samples VOLUME from the install tree.
 # Any failure stops with a message saying which step failed.
 cmake_minimum_required(VERSION 3.13)
 
@@ -163,6 +167,28 @@ print("pvpython: %d points with the installed plugin" % n)
 ]=])
   expect_installed_library("${PREFIX}/${plugin}")
   run(plugin "${PVPYTHON}" "${script}" "${PREFIX}/${plugin}")
+endif ()
+
+# --- 5. the programs -------------------------------------------------------------
+if (PROGRAMS)
+  string(REPLACE "|" ";" programs "${PROGRAMS}")
+  foreach (program IN LISTS programs)
+    set(binary "${PREFIX}/${BINDIR}/${program}")
+    expect_file("${BINDIR}/${program}")
+    expect_installed_library("${binary}")
+    run(${program} "${CMAKE_COMMAND}" -E env --unset=LD_LIBRARY_PATH "${binary}" --help)
+    if (NOT run_output MATCHES "Usage: ${program}")
+      message(FATAL_ERROR "[${program}] --help printed no usage: ${run_output}")
+    endif ()
+  endforeach ()
+  if (VOLUME AND "bluenoise-sample" IN_LIST programs)
+    run(sample "${CMAKE_COMMAND}" -E env --unset=LD_LIBRARY_PATH
+      "${PREFIX}/${BINDIR}/bluenoise-sample" "${VOLUME}" --output "${WORK_DIR}/sample"
+      --points 500 --spectrum-grid 16 --no-pictures)
+    if (NOT run_output MATCHES "points=[0-9]+ expected=500 ")
+      message(FATAL_ERROR "[sample] no summary with expected=500: ${run_output}")
+    endif ()
+  endif ()
 endif ()
 
 message(STATUS "install test passed")

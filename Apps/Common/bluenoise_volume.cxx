@@ -1,0 +1,340 @@
+// SPDX-FileCopyrightText: Copyright (c) 2025-2026 the BlueNoiseSampling contributors
+// SPDX-License-Identifier: BSD-3-Clause
+// See bluenoise_volume.h.
+#include "bluenoise_volume.h"
+#include "bluenoise_messages.h"
+#include "bluenoise_volume_headers.h"
+#include "bluenoise_xml_reader.h"
+
+#include "vtkImageData.h"
+#include "vtkInformation.h"
+#include "vtkStreamingDemandDrivenPipeline.h"
+#include "vtkImageReader.h"
+#include "vtkMatrix3x3.h"
+#include "vtkMatrix4x4.h"
+#include "vtkMetaImageReader.h"
+#include "vtkNIFTIImageHeader.h"
+#include "vtkNIFTIImageReader.h"
+#include "vtkNew.h"
+#include "vtkNrrdReader.h"
+#include "vtkPointData.h"
+#include "vtksys/SystemTools.hxx"
+
+#include <cerrno>
+#include <cmath>
+#include <cstring>
+#include <new>
+#include <sstream>
+
+namespace bluenoise
+{
+namespace
+{
+bool EndsWith(const std::string& s, const std::string& suffix)
+{
+  return s.size() >= suffix.size() &&
+    vtksys::SystemTools::LowerCase(s.substr(s.size() - suffix.size())) == suffix;
+}
+
+// A raw MetaImage's voxels through vtkImageReader, which reads sub-extents.
+vtkSmartPointer<vtkAlgorithm> NewRawReader(const Volume& volume)
+{
+  const RawLayout& raw = volume.Raw;
+  auto r = vtkSmartPointer<vtkImageReader>::New();
+  r->SetFileName(raw.DataFile.c_str());
+  r->SetFileDimensionality(3);
+  r->SetDataScalarType(raw.ScalarType);
+  r->SetNumberOfScalarComponents(raw.Components);
+  r->SetDataExtent(const_cast<int*>(volume.WholeExtent));
+  r->SetDataSpacing(const_cast<double*>(raw.Spacing));
+  r->SetDataOrigin(const_cast<double*>(raw.Origin));
+  r->SetHeaderSize(static_cast<unsigned long>(raw.HeaderBytes));
+  r->FileLowerLeftOn(); // rows stored first to last, as MetaImage does
+  if (raw.BigEndian)
+  {
+    r->SetDataByteOrderToBigEndian();
+  }
+  else
+  {
+    r->SetDataByteOrderToLittleEndian();
+  }
+  r->SetScalarArrayName("MetaImage"); // the name vtkMetaImageReader gives
+  return r;
+}
+
+vtkSmartPointer<vtkAlgorithm> NewReader(const std::string& path)
+{
+  vtkSmartPointer<vtkAlgorithm> reader;
+  if (EndsWith(path, ".vti"))
+  {
+    auto r = NewXMLImageDataReader();
+    r->SetFileName(path.c_str());
+    reader = r;
+  }
+  else if (EndsWith(path, ".nii") || EndsWith(path, ".nii.gz") || EndsWith(path, ".hdr"))
+  {
+    auto r = vtkSmartPointer<vtkNIFTIImageReader>::New();
+    r->SetFileName(path.c_str());
+    reader = r;
+  }
+  else if (EndsWith(path, ".nrrd") || EndsWith(path, ".nhdr"))
+  {
+    auto r = vtkSmartPointer<vtkNrrdReader>::New();
+    r->SetFileName(path.c_str());
+    reader = r;
+  }
+  else if (EndsWith(path, ".mhd") || EndsWith(path, ".mha"))
+  {
+    auto r = vtkSmartPointer<vtkMetaImageReader>::New();
+    r->SetFileName(path.c_str());
+    reader = r;
+  }
+  return reader;
+}
+
+// Runs the reader on `extent` (or its whole extent), catching its errors and
+// failed allocations.
+bool RunReader(vtkAlgorithm* reader, const int* extent, std::string& error)
+{
+  VTKMessages messages;
+  messages.Attach(reader);
+  std::string failure;
+  try
+  {
+    if (extent)
+    {
+      reader->UpdateExtent(extent);
+    }
+    else
+    {
+      reader->Update();
+    }
+  }
+  catch (const std::bad_alloc&)
+  {
+    failure = "out of memory while reading";
+  }
+  if (failure.empty() && !messages.Errors.empty())
+  {
+    failure = messages.Errors.front();
+  }
+  error = failure;
+  return failure.empty();
+}
+
+// The NIfTI world frame (sform, else qform) as the image's origin, spacing
+// and direction: world = M (origin + D diag(spacing) ijk) with M the 4x4
+// matrix, so the new direction columns are those of M D diag(spacing)
+// normalized, and their lengths the new spacing.
+std::string ApplyNIfTIFrame(vtkNIFTIImageReader* reader, vtkImageData* image, bool voxelSpace)
+{
+  vtkNIFTIImageHeader* header = reader->GetNIFTIHeader();
+  vtkMatrix4x4* m = nullptr;
+  std::string frame = "voxel";
+  if (voxelSpace)
+  {
+    return frame;
+  }
+  if (header && header->GetSFormCode() > 0 && reader->GetSFormMatrix())
+  {
+    m = reader->GetSFormMatrix();
+    frame = "sform";
+  }
+  else if (header && header->GetQFormCode() > 0 && reader->GetQFormMatrix())
+  {
+    m = reader->GetQFormMatrix();
+    frame = "qform";
+  }
+  if (!m)
+  {
+    return frame;
+  }
+  double origin[3], spacing[3], world[4];
+  image->GetOrigin(origin);
+  image->GetSpacing(spacing);
+  const double* d = image->GetDirectionMatrix()->GetData();
+  double point[4] = { origin[0], origin[1], origin[2], 1.0 };
+  m->MultiplyPoint(point, world);
+  double direction[9];
+  for (int j = 0; j < 3; ++j)
+  {
+    double column[3] = { 0, 0, 0 };
+    for (int i = 0; i < 3; ++i)
+    {
+      for (int k = 0; k < 3; ++k)
+      {
+        column[i] += m->GetElement(i, k) * d[3 * k + j] * spacing[j];
+      }
+    }
+    const double length = std::sqrt(column[0] * column[0] + column[1] * column[1] + column[2] * column[2]);
+    for (int i = 0; i < 3; ++i)
+    {
+      direction[3 * i + j] = length > 0.0 ? column[i] / length : (i == j ? 1.0 : 0.0);
+    }
+    spacing[j] = length > 0.0 ? length : spacing[j];
+  }
+  image->SetOrigin(world);
+  image->SetSpacing(spacing);
+  image->SetDirectionMatrix(direction);
+  return frame;
+}
+
+// The reader's whole extent is the one the header check vouched for (slabs
+// are requested from it).
+bool SameExtent(vtkAlgorithm* reader, const Volume& volume, std::string& error)
+{
+  VTKMessages messages;
+  messages.Attach(reader);
+  reader->UpdateInformation();
+  int extent[6] = { 0, -1, 0, -1, 0, -1 };
+  vtkInformation* info = reader->GetOutputInformation(0);
+  if (info->Has(vtkStreamingDemandDrivenPipeline::WHOLE_EXTENT()))
+  {
+    info->Get(vtkStreamingDemandDrivenPipeline::WHOLE_EXTENT(), extent);
+  }
+  if (!std::equal(extent, extent + 6, volume.WholeExtent))
+  {
+    std::ostringstream s;
+    s << "the reader's extent (" << extent[0] << " " << extent[1] << " " << extent[2] << " "
+      << extent[3] << " " << extent[4] << " " << extent[5] << ") differs from the header's ("
+      << volume.WholeExtent[0] << " " << volume.WholeExtent[1] << " " << volume.WholeExtent[2]
+      << " " << volume.WholeExtent[3] << " " << volume.WholeExtent[4] << " "
+      << volume.WholeExtent[5] << ")"
+      << (messages.Errors.empty() ? std::string() : ": " + messages.Errors.front());
+    error = s.str();
+    return false;
+  }
+  return true;
+}
+
+// A volume read whole has the extent the header check vouched for (vtkNrrdReader,
+// for one, takes the first axis of some 3D files as components).
+bool SameImageExtent(vtkImageData* image, const Volume& volume, std::string& error)
+{
+  int extent[6];
+  image->GetExtent(extent);
+  if (!std::equal(extent, extent + 6, volume.WholeExtent))
+  {
+    std::ostringstream s;
+    s << "the reader read " << image->GetDimensions()[0] << " x " << image->GetDimensions()[1]
+      << " x " << image->GetDimensions()[2] << " voxels, not the header's "
+      << volume.WholeExtent[1] - volume.WholeExtent[0] + 1 << " x "
+      << volume.WholeExtent[3] - volume.WholeExtent[2] + 1 << " x "
+      << volume.WholeExtent[5] - volume.WholeExtent[4] + 1;
+    error = s.str();
+    return false;
+  }
+  return true;
+}
+
+bool CheckImage(vtkImageData* image, std::string& error)
+{
+  if (!image || image->GetNumberOfPoints() == 0)
+  {
+    error = "the reader produced no voxels";
+    return false;
+  }
+  if (image->GetPointData()->GetNumberOfArrays() == 0)
+  {
+    error = "the volume has no point-data array";
+    return false;
+  }
+  return true;
+}
+}
+
+const char* VolumeSuffixes()
+{
+  return ".vti, .nii, .nii.gz, .hdr, .nrrd, .nhdr, .mhd, .mha";
+}
+
+bool CheckVolumeFile(const std::string& path, Volume& volume, std::string& error)
+{
+  volume = Volume();
+  volume.Path = path;
+  bool& streamable = volume.StreamableFile;
+  bool ok = false;
+  if (headers::FileSize(path) < 0)
+  {
+    error = path + ": " + std::strerror(errno);
+    return false;
+  }
+  if (EndsWith(path, ".vti"))
+    ok = headers::CheckVTI(path, volume, streamable, error);
+  else if (EndsWith(path, ".nii") || EndsWith(path, ".nii.gz") || EndsWith(path, ".hdr") ||
+    EndsWith(path, ".hdr.gz"))
+    ok = headers::CheckNIfTI(path, volume, error);
+  else if (EndsWith(path, ".nrrd") || EndsWith(path, ".nhdr"))
+    ok = headers::CheckNRRD(path, volume, streamable, error);
+  else if (EndsWith(path, ".mhd") || EndsWith(path, ".mha"))
+    ok = headers::CheckMetaImage(path, volume, streamable, error);
+  else
+  {
+    error = path + ": unknown volume format (expected " + VolumeSuffixes() + ")";
+    return false;
+  }
+  if (!ok)
+  {
+    error = path + ": " + error;
+    return false;
+  }
+  volume.Frame = "file";
+  return true;
+}
+
+bool OpenVolume(
+  const std::string& path, const VolumeOptions& options, Volume& volume, std::string& error)
+{
+  return CheckVolumeFile(path, volume, error) && ReadVolume(options, volume, error);
+}
+
+bool ReadVolume(const VolumeOptions& options, Volume& volume, std::string& error)
+{
+  const std::string& path = volume.Path;
+  const bool streamable = volume.StreamableFile;
+  auto reader = streamable && volume.Format == "MetaImage" ? NewRawReader(volume) : NewReader(path);
+  if (!reader)
+  {
+    error = path + ": unknown volume format (expected " + std::string(VolumeSuffixes()) + ")";
+    return false;
+  }
+  // The reader's own reading of the header must agree with the check's
+  // before it reads a byte of data.
+  if (!SameExtent(reader, volume, error))
+  {
+    error = path + ": " + error;
+    return false;
+  }
+  if (streamable && options.AllowStreaming)
+  {
+    // The first layer only: the arrays' names and types, and a read that works.
+    int layer[6];
+    std::copy(volume.WholeExtent, volume.WholeExtent + 6, layer);
+    layer[5] = layer[4];
+    if (!RunReader(reader, layer, error))
+    {
+      error = path + ": " + error;
+      return false;
+    }
+    volume.Reader = reader;
+  }
+  else if (!RunReader(reader, nullptr, error))
+  {
+    error = path + ": " + error;
+    return false;
+  }
+  auto image = vtkImageData::SafeDownCast(reader->GetOutputDataObject(0));
+  if (!CheckImage(image, error) || (!volume.Reader && !SameImageExtent(image, volume, error)))
+  {
+    error = path + ": " + error;
+    return false;
+  }
+  volume.Image = vtkSmartPointer<vtkImageData>::New();
+  volume.Image->ShallowCopy(image);
+  if (auto nifti = vtkNIFTIImageReader::SafeDownCast(reader))
+  {
+    volume.Frame = ApplyNIfTIFrame(nifti, volume.Image, options.VoxelSpace);
+  }
+  return true;
+}
+}
