@@ -19,4 +19,4 @@ add_test(NAME MainJob
     "-DPOINTS=20000"
     "-DXVFB_RUN=${BLUENOISE_XVFB_RUN}"
     -P "${CMAKE_CURRENT_SOURCE_DIR}/RunMainJobTest.cmake")
-set_tests_properties(MainJob PROPERTIES LABELS "mainjob" TIMEOUT 600)
+set_tests_properties(MainJob PROPERTIES LABELS "mainjob" TIMEOUT 600 RESOURCE_LOCK xvfb)
