@@ -65,9 +65,12 @@
  * the other (the statistics first, when needed, then the sampling), and the
  * scan carries its state from slab to slab: the output is the same as in one
  * go, and the input is never held whole. Readers that produce sub-extents
- * (MetaImage, raw NRRD, VTI with raw or uncompressed data, vtkImageReader2)
- * then read one slab at a time; others deliver more than asked for, which is
- * correct but saves nothing. The points and the mask (GenerateMask) still
+ * (vtkImageReader / vtkImageReader2 on raw files, vtkNrrdReader on raw NRRD,
+ * vtkXMLImageDataReader on VTI with raw appended data) then read one slab at
+ * a time; others deliver more than asked for, which is correct but saves
+ * nothing. vtkMetaImageReader (VTK 9.2) is not one of them: it reads the
+ * whole file (bluenoise-sample reads raw MetaImage through vtkImageReader
+ * from the parsed header instead). The points and the mask (GenerateMask) still
  * grow with the output.
  *
  * Time O(voxels); memory besides the input and the output a few layers. The
