@@ -4,10 +4,10 @@
 #include "vtkErrorDiffusionOptimizedParameters.h"
 
 #include <algorithm>
+#include <cstdio>
 #include <cstdlib>
 #include <cmath>
 #include <fstream>
-#include <iomanip>
 #include <sstream>
 
 namespace
@@ -44,6 +44,20 @@ std::string Trim(const std::string& s)
   }
   const auto e = s.find_last_not_of(" \t\r\n");
   return s.substr(b, e - b + 1);
+}
+
+// Ten significant digits keep a table readable; a value they do not reproduce
+// exactly gets 17 (enough for any double), so that what Write prints parses
+// back to the same table.
+std::string Format(double value)
+{
+  char text[32];
+  std::snprintf(text, sizeof(text), "%.10g", value);
+  if (std::strtod(text, nullptr) != value)
+  {
+    std::snprintf(text, sizeof(text), "%.17g", value);
+  }
+  return text;
 }
 }
 
@@ -302,15 +316,14 @@ void vtkErrorDiffusionParameterTable::Write(std::ostream& out, const std::string
     }
   }
   out << "# level  A100  A-110  A010  A0-11  A-101  A001  m\n";
-  out << std::setprecision(10);
   for (const Key& k : this->Keys)
   {
-    out << k.Level;
+    out << Format(k.Level);
     for (double a : k.Coefficients)
     {
-      out << ' ' << a;
+      out << ' ' << Format(a);
     }
-    out << ' ' << k.Modulation << "\n";
+    out << ' ' << Format(k.Modulation) << "\n";
   }
 }
 
