@@ -1,5 +1,6 @@
 # SPDX-FileCopyrightText: Copyright (c) 2025-2026 the BlueNoiseSampling contributors
 # SPDX-License-Identifier: BSD-3-Clause
-bluenoise_add_benchmark(BenchmarkErrorDiffusionSampler)
+# The smoke run (CTest): the smallest cases.
+bluenoise_add_benchmark(BenchmarkErrorDiffusionSampler SMOKE "L:256/g255:8/")
 
 
