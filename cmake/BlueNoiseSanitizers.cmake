@@ -64,6 +64,13 @@ if ("address" IN_LIST BLUENOISE_SANITIZE)
       "-Wl,-rpath,${_bluenoise_asan_dir}")
   endif ()
 endif ()
+# What a program built elsewhere against this build's libraries links with
+# (Testing/Install's example).
+string(REPLACE ";" " " BLUENOISE_SANITIZER_EXE_LINKER_FLAGS "${_bluenoise_sanitizer_flags}")
+if (_bluenoise_asan_dir)
+  string(APPEND BLUENOISE_SANITIZER_EXE_LINKER_FLAGS
+    " -shared-libasan -Wl,-rpath,${_bluenoise_asan_dir}")
+endif ()
 message(STATUS "BlueNoise: sanitizers ${_bluenoise_sanitizers}"
   " (runtime for Python: ${BLUENOISE_SANITIZER_RUNTIME})")
 
