@@ -155,6 +155,26 @@ int main()
   ExpectParseError("8 0 0 0 0 0 0 1\n", "line 1");
   ExpectParseError("200 1 1 1 1 1 1 1\n", "127.5");
   ExpectParseError("# only comments\n", "no parameter lines");
+  // Found by fuzzing: coefficients whose sum overflows (every weight became 0),
+  // an m(g) too large for the float it is used as (it became infinite), and a
+  // field with a NUL byte inside (read as the number before it).
+  ExpectParseError("8 1e308 1e308 1 1 1 1 1\n", "finite sum");
+  ExpectParseError("8 1 1 1 1 1 1 1e66\n", "m(g)");
+  ExpectParseError(std::string("8 1 1 1 1 1 1 1\n16 1 2\0x 1 1 1 1 1\n", 35), "line 2");
+  // A long table parses (each line is checked against the one before; checking
+  // the whole table again per line took hours for this one).
+  {
+    std::ostringstream text;
+    for (int i = 1; i <= 100000; ++i)
+    {
+      text << i * 0.001 << " 1 2 3 4 5 6 1\n";
+    }
+    std::istringstream in(text.str());
+    vtkErrorDiffusionParameterTable t;
+    std::string error;
+    Check(vtkErrorDiffusionParameterTable::Parse(in, t, error) && t.GetKeys().size() == 100000,
+      "a table of 100000 keys: " + error);
+  }
   {
     vtkErrorDiffusionParameterTable t;
     std::string error;
