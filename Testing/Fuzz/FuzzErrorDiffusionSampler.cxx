@@ -294,6 +294,12 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size)
   Configure(fdp, sampler);
   const int pieces = fdp.ConsumeBool() ? 1 : fdp.ConsumeIntegralInRange<int>(1, 4);
   const int piece = fdp.ConsumeIntegralInRange<int>(0, pieces - 1);
+  if (std::getenv("BLUENOISE_FUZZ_PRINT")) // to reproduce a finding by hand
+  {
+    sampler->Print(std::cerr);
+    std::cerr << "piece " << piece << " of " << pieces << "\n";
+    image->Print(std::cerr);
+  }
   sampler->UpdatePiece(piece, pieces, 0);
 
   if (observer->NumberOfErrors > 0)
