@@ -28,6 +28,9 @@ packages=(
   libtbb-dev
   # Python for scripts and reports
   python3-numpy python3-scipy
+  # Sanitizer and fuzzer builds (scripts/sanitize.sh): clang with libFuzzer, and
+  # llvm-symbolizer (llvm-14) for readable sanitizer reports
+  clang-14 libfuzzer-14-dev llvm-14
 )
 
 missing=()

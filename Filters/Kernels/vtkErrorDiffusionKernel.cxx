@@ -158,7 +158,7 @@ void vtkErrorDiffusionKernel::Begin(int nx, int ny, int firstLayer)
   this->Next.assign(layer, 0.0f);
   // The table or the scale may have changed since the last run.
   this->ParameterTable.assign(ParameterEntries, LevelParameters());
-  if (this->Method == METHOD_ERROR_DIFFUSION && this->FixedCharge < 0.0f)
+  if (this->Method == METHOD_ERROR_DIFFUSION && !this->UseFixedCharge)
   {
     this->Charges = vtkErrorDiffusionChargeCurve::Get(this->Table, this->ModulationScale);
   }
@@ -172,9 +172,9 @@ vtkErrorDiffusionKernel::LevelParameters vtkErrorDiffusionKernel::Evaluate(float
   LevelParameters entry;
   const auto params = this->Table.Evaluate(minority);
   std::copy(params.Weights.begin(), params.Weights.end(), entry.Weights);
-  const float charge = this->FixedCharge >= 0.0f ? this->FixedCharge
-    : this->Charges                              ? this->Charges->At(minority)
-                                                 : 0.0f;
+  const float charge = this->UseFixedCharge ? this->FixedCharge
+    : this->Charges                         ? this->Charges->At(minority)
+                                            : 0.0f;
   entry.Base = 0.5f - charge;
   entry.Modulation = static_cast<float>(this->ModulationScale) * params.Modulation;
   entry.Valid = true;
@@ -298,6 +298,10 @@ double vtkErrorDiffusionKernel::MeasureReceivedError(const vtkErrorDiffusionPara
   probe.SetParameters(table);
   probe.SetModulationScale(modulationScale);
   probe.SetSeed(static_cast<std::uint64_t>(seed));
+  // Even a negative guess: the curve would calibrate itself again, under the
+  // lock its caller holds (a deadlock found by fuzzing: Optimized parameters
+  // with ModulationScale 0).
+  probe.UseFixedCharge = true;
   probe.FixedCharge = charge;
   probe.SetWarmUpLayers(0);
   probe.Begin(n, n);

@@ -240,7 +240,10 @@ private:
   int LayersDone = 0;
   Generator Random;
   std::shared_ptr<vtkErrorDiffusionChargeCurve> Charges;
-  float FixedCharge = -1.0f;  // >= 0: this charge at every density (calibration)
+  // Calibration (MeasureReceivedError): FixedCharge at every density, whatever
+  // its sign, and never the charge curve, which is what is being calibrated.
+  bool UseFixedCharge = false;
+  float FixedCharge = 0.0f;
   std::vector<float> Current; // error accumulated for the layer being scanned
   std::vector<float> Next;    // error passed on to the following layer
   float Carry = 0.0f;         // the share in transit to the next voxel scanned

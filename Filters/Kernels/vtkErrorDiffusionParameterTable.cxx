@@ -4,10 +4,11 @@
 #include "vtkErrorDiffusionOptimizedParameters.h"
 
 #include <algorithm>
+#include <cstdio>
 #include <cstdlib>
 #include <cmath>
 #include <fstream>
-#include <iomanip>
+#include <limits>
 #include <sstream>
 
 namespace
@@ -44,6 +45,67 @@ std::string Trim(const std::string& s)
   }
   const auto e = s.find_last_not_of(" \t\r\n");
   return s.substr(b, e - b + 1);
+}
+
+// Ten significant digits keep a table readable; a value they do not reproduce
+// exactly gets 17 (enough for any double), so that what Write prints parses
+// back to the same table.
+std::string Format(double value)
+{
+  char text[32];
+  std::snprintf(text, sizeof(text), "%.10g", value);
+  if (std::strtod(text, nullptr) != value)
+  {
+    std::snprintf(text, sizeof(text), "%.17g", value);
+  }
+  return text;
+}
+
+using Key = vtkErrorDiffusionParameterTable::Key;
+
+/// What is wrong with one key after `previous` (nullptr for the first), or nullptr.
+const char* KeyProblem(const Key& k, const Key* previous)
+{
+  if (!std::isfinite(k.Level) || k.Level <= 0.0 || k.Level > MaxLevel)
+  {
+    return "level must be in (0, 127.5] (1/255 units)";
+  }
+  if (previous && !(k.Level > previous->Level))
+  {
+    return "levels must increase strictly";
+  }
+  double sum = 0.0;
+  for (double a : k.Coefficients)
+  {
+    if (!std::isfinite(a) || a < 0.0)
+    {
+      return "coefficients must be finite and non-negative";
+    }
+    sum += a;
+  }
+  if (!(sum > 0.0))
+  {
+    return "coefficients must not all be zero";
+  }
+  // An infinite sum would turn every weight into 0 (or NaN).
+  if (!std::isfinite(sum))
+  {
+    return "coefficients must have a finite sum";
+  }
+  // m(g) is used as a float: a larger value would become infinite.
+  if (!std::isfinite(k.Modulation) || k.Modulation < 0.0 ||
+    k.Modulation > std::numeric_limits<float>::max())
+  {
+    return "m(g) must be finite and non-negative";
+  }
+  return nullptr;
+}
+
+std::string KeyName(size_t index, const Key& k)
+{
+  std::ostringstream where;
+  where << "key " << index + 1 << " (level " << k.Level << "): ";
+  return where.str();
 }
 }
 
@@ -106,33 +168,9 @@ bool vtkErrorDiffusionParameterTable::SetKeys(const std::vector<Key>& keys, std:
   }
   for (size_t i = 0; i < keys.size(); ++i)
   {
-    const Key& k = keys[i];
-    std::ostringstream where;
-    where << "key " << i + 1 << " (level " << k.Level << "): ";
-    if (!std::isfinite(k.Level) || k.Level <= 0.0 || k.Level > MaxLevel)
+    if (const char* why = KeyProblem(keys[i], i > 0 ? &keys[i - 1] : nullptr))
     {
-      return fail(where.str() + "level must be in (0, 127.5] (1/255 units)");
-    }
-    if (i > 0 && !(k.Level > keys[i - 1].Level))
-    {
-      return fail(where.str() + "levels must increase strictly");
-    }
-    double sum = 0.0;
-    for (double a : k.Coefficients)
-    {
-      if (!std::isfinite(a) || a < 0.0)
-      {
-        return fail(where.str() + "coefficients must be finite and non-negative");
-      }
-      sum += a;
-    }
-    if (!(sum > 0.0))
-    {
-      return fail(where.str() + "coefficients must not all be zero");
-    }
-    if (!std::isfinite(k.Modulation) || k.Modulation < 0.0)
-    {
-      return fail(where.str() + "m(g) must be finite and non-negative");
+      return fail(KeyName(i, keys[i]) + why);
     }
   }
   this->Keys = keys;
@@ -209,7 +247,6 @@ bool vtkErrorDiffusionParameterTable::Parse(
   std::istream& in, vtkErrorDiffusionParameterTable& table, std::string& error)
 {
   std::vector<Key> keys;
-  std::vector<int> lineOfKey;
   std::string line;
   int lineNumber = 0;
   while (std::getline(in, line))
@@ -233,7 +270,8 @@ bool vtkErrorDiffusionParameterTable::Parse(
     {
       char* end = nullptr;
       const double v = std::strtod(field.c_str(), &end);
-      if (end == field.c_str() || *end != '\0')
+      // The whole field, up to a NUL byte inside it too.
+      if (end == field.c_str() || end != field.c_str() + field.size())
       {
         error = "line " + std::to_string(lineNumber) + ": '" + field + "' is not a number";
         return false;
@@ -250,18 +288,15 @@ bool vtkErrorDiffusionParameterTable::Parse(
     k.Level = values[0];
     std::copy(values.begin() + 1, values.begin() + 7, k.Coefficients.begin());
     k.Modulation = values[7];
-    // Validate key by key so the message can name the line.
-    std::vector<Key> probe = keys;
-    probe.push_back(k);
-    vtkErrorDiffusionParameterTable check;
-    std::string why;
-    if (!check.SetKeys(probe, &why))
+    // Validate key by key so the message can name the line (against the key
+    // before only: checking the whole table again per line made a long file
+    // take quadratic time).
+    if (const char* why = KeyProblem(k, keys.empty() ? nullptr : &keys.back()))
     {
-      error = "line " + std::to_string(lineNumber) + ": " + why;
+      error = "line " + std::to_string(lineNumber) + ": " + KeyName(keys.size(), k) + why;
       return false;
     }
     keys.push_back(k);
-    lineOfKey.push_back(lineNumber);
   }
   if (keys.empty())
   {
@@ -302,15 +337,14 @@ void vtkErrorDiffusionParameterTable::Write(std::ostream& out, const std::string
     }
   }
   out << "# level  A100  A-110  A010  A0-11  A-101  A001  m\n";
-  out << std::setprecision(10);
   for (const Key& k : this->Keys)
   {
-    out << k.Level;
+    out << Format(k.Level);
     for (double a : k.Coefficients)
     {
-      out << ' ' << a;
+      out << ' ' << Format(a);
     }
-    out << ' ' << k.Modulation << "\n";
+    out << ' ' << Format(k.Modulation) << "\n";
   }
 }
 

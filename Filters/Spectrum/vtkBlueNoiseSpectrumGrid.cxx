@@ -195,8 +195,11 @@ bool vtkBlueNoiseSpectrumGrid::Description::ReadSamplingGrid(vtkFieldData* fd, s
       error = "SamplingGridSpacing has a zero component";
       return false;
     }
+    // Whole numbers, and small enough that the extent and its width are ints.
+    const double limit = VTK_INT_MAX / 2;
     if (extent[2 * a + 1] < extent[2 * a] || extent[2 * a] != std::floor(extent[2 * a]) ||
-      extent[2 * a + 1] != std::floor(extent[2 * a + 1]))
+      extent[2 * a + 1] != std::floor(extent[2 * a + 1]) || !(std::abs(extent[2 * a]) <= limit) ||
+      !(std::abs(extent[2 * a + 1]) <= limit))
     {
       error = "SamplingGridExtent is not an extent (i0 i1 j0 j1 k0 k1 with whole i0 <= i1 ...)";
       return false;

@@ -1,5 +1,7 @@
 # SPDX-FileCopyrightText: Copyright (c) 2025-2026 the BlueNoiseSampling contributors
 # SPDX-License-Identifier: BSD-3-Clause
-bluenoise_add_benchmark(BenchmarkErrorDiffusionSampler)
+# The smoke run (CTest): the smallest cases.
+bluenoise_add_benchmark(BenchmarkErrorDiffusionSampler
+  SMOKE "^BM_Kernel/L:256/g255:8$|^BM_Filter/L:256/g255:8/float:0/busy:0/thread:1")
 
 

@@ -1,6 +1,7 @@
 # SPDX-FileCopyrightText: Copyright (c) 2025-2026 the BlueNoiseSampling contributors
 # SPDX-License-Identifier: BSD-3-Clause
-bluenoise_add_benchmark(BenchmarkSpectrum)
+# The smoke run (CTest): the smallest cases.
+bluenoise_add_benchmark(BenchmarkSpectrum SMOKE "/(64|128)/1/")
 # The FFTW 3D plan with FFTW threads is the baseline the kernel's transform is
 # measured against (libfftw3_threads ships with Debian's libfftw3-dev; it has
 # no pkg-config file of its own).

@@ -248,6 +248,26 @@ void FilterErrors()
   malformed->GetFieldData()->AddArray(origin);
   ExpectFilterError(malformed, "SamplingGridOrigin has 2 values", "malformed field data");
 
+  // An extent beyond the range of int (found by fuzzing: it was converted to int
+  // regardless, which is undefined).
+  vtkNew<vtkPolyData> huge;
+  huge->SetPoints(points);
+  const char* names[] = { "SamplingGridOrigin", "SamplingGridSpacing", "SamplingGridExtent" };
+  const double values[3][6] = { { 0, 0, 0 }, { 1, 1, 1 }, { 0, 7, 0, 7, -1e300, 7 } };
+  for (int a = 0; a < 3; ++a)
+  {
+    vtkNew<vtkDoubleArray> array;
+    array->SetName(names[a]);
+    const int n = a == 2 ? 6 : 3;
+    array->SetNumberOfValues(n);
+    for (int i = 0; i < n; ++i)
+    {
+      array->SetValue(i, values[a][i]);
+    }
+    huge->GetFieldData()->AddArray(array);
+  }
+  ExpectFilterError(huge, "SamplingGridExtent is not an extent", "extent beyond int");
+
   // Every point outside the grid: N = 0, and the error says why.
   vtkNew<vtkPolyData> away;
   vtkNew<vtkPoints> far;

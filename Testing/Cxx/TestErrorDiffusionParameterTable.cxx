@@ -17,6 +17,27 @@ bool Near(double a, double b, double tol = 1e-6)
   return std::abs(a - b) <= tol;
 }
 
+/// What Write prints parses back to the same keys, exactly.
+bool RoundTrips(const vtkErrorDiffusionParameterTable& table)
+{
+  std::stringstream text;
+  table.Write(text, "written by the test\nsecond comment line");
+  vtkErrorDiffusionParameterTable back;
+  std::string error;
+  if (!vtkErrorDiffusionParameterTable::Parse(text, back, error))
+  {
+    return false;
+  }
+  bool same = back.GetKeys().size() == table.GetKeys().size();
+  for (size_t i = 0; same && i < back.GetKeys().size(); ++i)
+  {
+    same = back.GetKeys()[i].Level == table.GetKeys()[i].Level &&
+      back.GetKeys()[i].Coefficients == table.GetKeys()[i].Coefficients &&
+      back.GetKeys()[i].Modulation == table.GetKeys()[i].Modulation;
+  }
+  return same;
+}
+
 void ExpectParseError(const std::string& text, const std::string& expected)
 {
   std::istringstream in(text);
@@ -101,20 +122,22 @@ int main()
     "Fixed parameters");
 
   // Round trip through the text format.
+  Check(RoundTrips(paper), "round trip keeps every key of Table 1");
+  // Values that ten digits do not hold (found by FuzzErrorDiffusionParameterTable:
+  // Write printed 0.22379437252 as 0.2237943725), and levels that differ beyond
+  // the tenth digit, which then collided and no longer increased.
   {
-    std::stringstream text;
-    paper.Write(text, "written by the test\nsecond comment line");
-    vtkErrorDiffusionParameterTable back;
+    std::istringstream in("1.00000000001 1 1 1 1 1 1 1\n1.00000000002 1 1 1 1 1 1 1\n"
+                          "56 0.2149282335 0.08268727514 0.2393145864 0.05878002222 "
+                          "0.1804955102 0.22379437252 1.058935205\n");
+    vtkErrorDiffusionParameterTable precise;
     std::string error;
-    Check(vtkErrorDiffusionParameterTable::Parse(text, back, error), "parse written table: " + error);
-    bool same = back.GetKeys().size() == paper.GetKeys().size();
-    for (size_t i = 0; same && i < back.GetKeys().size(); ++i)
-    {
-      same = back.GetKeys()[i].Level == paper.GetKeys()[i].Level &&
-        back.GetKeys()[i].Coefficients == paper.GetKeys()[i].Coefficients &&
-        back.GetKeys()[i].Modulation == paper.GetKeys()[i].Modulation;
-    }
-    Check(same, "round trip keeps every key");
+    Check(vtkErrorDiffusionParameterTable::Parse(in, precise, error), "parse: " + error);
+    Check(RoundTrips(precise), "round trip keeps values beyond ten digits");
+    std::ostringstream out;
+    paper.Write(out);
+    Check(out.str().find("\n8 525 319 719 291 132 204 1.19\n") != std::string::npos,
+      "short values stay short: " + out.str());
   }
   // Commas, comments and blank lines are accepted.
   {
@@ -132,6 +155,26 @@ int main()
   ExpectParseError("8 0 0 0 0 0 0 1\n", "line 1");
   ExpectParseError("200 1 1 1 1 1 1 1\n", "127.5");
   ExpectParseError("# only comments\n", "no parameter lines");
+  // Found by fuzzing: coefficients whose sum overflows (every weight became 0),
+  // an m(g) too large for the float it is used as (it became infinite), and a
+  // field with a NUL byte inside (read as the number before it).
+  ExpectParseError("8 1e308 1e308 1 1 1 1 1\n", "finite sum");
+  ExpectParseError("8 1 1 1 1 1 1 1e66\n", "m(g)");
+  ExpectParseError(std::string("8 1 1 1 1 1 1 1\n16 1 2\0x 1 1 1 1 1\n", 35), "line 2");
+  // A long table parses (each line is checked against the one before; checking
+  // the whole table again per line took hours for this one).
+  {
+    std::ostringstream text;
+    for (int i = 1; i <= 100000; ++i)
+    {
+      text << i * 0.001 << " 1 2 3 4 5 6 1\n";
+    }
+    std::istringstream in(text.str());
+    vtkErrorDiffusionParameterTable t;
+    std::string error;
+    Check(vtkErrorDiffusionParameterTable::Parse(in, t, error) && t.GetKeys().size() == 100000,
+      "a table of 100000 keys: " + error);
+  }
   {
     vtkErrorDiffusionParameterTable t;
     std::string error;

@@ -4,7 +4,7 @@
 #
 #   cmake -DBUILD_DIR=... -DPREFIX=... -DWORK_DIR=... -DEXAMPLE_SOURCE=...
 #         -DLIBDIR=lib -DINCLUDEDIR=include -DGENERATOR=Ninja [-DMAKE_PROGRAM=...]
-#         [-DCXX_COMPILER=...] [-DBUILD_TYPE=Release]
+#         [-DCXX_COMPILER=...] [-DBUILD_TYPE=Release] [-DEXE_LINKER_FLAGS=...]
 #         [-DPYTHON=/usr/bin/python3 -DPYTHON_DESTINATION=lib/python3/dist-packages]
 #         [-DPVPYTHON=/usr/bin/pvpython -DPLUGIN_DESTINATION=lib/paraview-5.11/plugins]
 #         [-DBINDIR=bin -DPROGRAMS=name|name|... -DVOLUME=small.vti]
@@ -87,6 +87,9 @@ if (CXX_COMPILER)
 endif ()
 if (BUILD_TYPE)
   list(APPEND configure_args "-DCMAKE_BUILD_TYPE=${BUILD_TYPE}")
+endif ()
+if (EXE_LINKER_FLAGS)
+  list(APPEND configure_args "-DCMAKE_EXE_LINKER_FLAGS=${EXE_LINKER_FLAGS}")
 endif ()
 # No VTK_DIR: the package has to find the VTK it was built against by itself.
 run(configure "${CMAKE_COMMAND}" ${configure_args})
