@@ -1,7 +1,7 @@
 // SPDX-FileCopyrightText: Copyright (c) 2025-2026 the BlueNoiseSampling contributors
 // SPDX-License-Identifier: BSD-3-Clause
 // bluenoise-optimize: the paper's parameter search (section 4.2). For each key
-// density level it minimises T(g) = w L(g) + (1 - w) S(g) over the six
+// density level it minimizes T(g) = w L(g) + (1 - w) S(g) over the six
 // diffusion coefficients and m(g) with Nelder-Mead, starting from a table's
 // parameters at that level, and writes the result as a parameter table that
 // the sampler's Custom parameter set reads, with T, L, S per level as comments.
@@ -63,7 +63,7 @@ int ParseOptions(int argc, char* argv[], Options& o)
   return cli.Parse(argc, argv);
 }
 
-// One comment line per level: the whole-volume figures the search minimised,
+// One comment line per level: the whole-volume figures the search minimized,
 // the start point's, and the interior's (faces cropped) of the result.
 std::string Comment(const LevelResult& r, const vtkErrorDiffusionOptimizer::Metrics& interior)
 {
@@ -189,7 +189,7 @@ int main(int argc, char* argv[])
     }
   }
   std::ostringstream header;
-  header << "Optimised by bluenoise-optimize: minimum of T = w L + (1 - w) S per level\n"
+  header << "Optimized by bluenoise-optimize: minimum of T = w L + (1 - w) S per level\n"
          << "cube " << settings.GridSize << "^3, seeds 0.." << settings.Seeds - 1
          << " averaged, w = " << settings.Weight << ", Nelder-Mead budget "
          << settings.MaximumEvaluations << " per level, start " << start

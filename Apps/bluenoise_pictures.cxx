@@ -102,7 +102,7 @@ std::string Format(const char* format, double value)
   return buffer;
 }
 
-// A sequential colour map from dark blue-violet through teal and green to
+// A sequential color map from dark blue-violet through teal and green to
 // yellow, with a lightness that rises monotonically.
 vtkSmartPointer<vtkLookupTable> MakeColorMap(const double range[2])
 {
@@ -127,9 +127,9 @@ vtkSmartPointer<vtkLookupTable> MakeColorMap(const double range[2])
   return table;
 }
 
-// The samples whose coordinate `axis` lies within `half` of `centre`.
+// The samples whose coordinate `axis` lies within `half` of `center`.
 vtkSmartPointer<vtkPolyData> Slab(vtkPolyData* samples, vtkDataArray* colors, int axis,
-  double centre, double half)
+  double center, double half)
 {
   vtkNew<vtkPoints> points;
   points->SetDataTypeToFloat();
@@ -140,7 +140,7 @@ vtkSmartPointer<vtkPolyData> Slab(vtkPolyData* samples, vtkDataArray* colors, in
   {
     double p[3];
     samples->GetPoint(i, p);
-    if (std::abs(p[axis] - centre) <= half)
+    if (std::abs(p[axis] - center) <= half)
     {
       points->InsertNextPoint(p);
       values->InsertNextValue(static_cast<float>(colors->GetComponent(i, 0)));
@@ -165,7 +165,7 @@ vtkSmartPointer<vtkActor> PointsActor(
   mapper->SetInputData(points);
   mapper->SetLookupTable(colors);
   mapper->SetUseLookupTableScalarRange(true);
-  mapper->SetColorModeToMapScalars(); // unsigned char values are values, not colours
+  mapper->SetColorModeToMapScalars(); // unsigned char values are values, not colors
   mapper->SetScalarModeToUsePointFieldData();
   mapper->SelectColorArray(array);
   mapper->ScalarVisibilityOn();
@@ -389,7 +389,7 @@ bool WriteSamplesPicture(const PictureSession& session, vtkPolyData* samples,
   }
   if (!colors || !colors->GetName())
   {
-    error = "the points carry no array to colour by";
+    error = "the points carry no array to color by";
     return false;
   }
   double range[2];
@@ -403,7 +403,7 @@ bool WriteSamplesPicture(const PictureSession& session, vtkPolyData* samples,
 
   double bounds[6];
   samples->GetBounds(bounds);
-  const double centre[3] = { 0.5 * (bounds[0] + bounds[1]), 0.5 * (bounds[2] + bounds[3]),
+  const double center[3] = { 0.5 * (bounds[0] + bounds[1]), 0.5 * (bounds[2] + bounds[3]),
     0.5 * (bounds[4] + bounds[5]) };
   const double size[3] = { bounds[1] - bounds[0], bounds[3] - bounds[2], bounds[5] - bounds[4] };
   const double half = 0.5 * std::max(options.SlabThickness, 1e-12);
@@ -422,8 +422,8 @@ bool WriteSamplesPicture(const PictureSession& session, vtkPolyData* samples,
   whole->AddActor(PointsActor(samples, colors->GetName(), lut, 2.5));
   whole->UseFXAAOn();
   vtkCamera* camera = whole->GetActiveCamera();
-  camera->SetFocalPoint(centre);
-  camera->SetPosition(centre[0] - 1.0, centre[1] + 0.45, centre[2] + 0.35);
+  camera->SetFocalPoint(center);
+  camera->SetPosition(center[0] - 1.0, center[1] + 0.45, center[2] + 0.35);
   camera->SetViewUp(0.0, 0.0, 1.0);
   whole->ResetCamera();
   camera->Zoom(1.15);
@@ -432,7 +432,7 @@ bool WriteSamplesPicture(const PictureSession& session, vtkPolyData* samples,
 
   const std::string count = std::to_string(samples->GetNumberOfPoints());
   std::string caption = options.Caption.empty() ? "" : options.Caption + "\n";
-  caption += count + " blue-noise samples, coloured by " +
+  caption += count + " blue-noise samples, colored by " +
     (colorTitle == "Density" ? "the density they were drawn with"
                              : "the input array " + colorTitle);
   whole->AddViewProp(Caption(caption, 18, 0.02, 0.98));
@@ -458,7 +458,7 @@ bool WriteSamplesPicture(const PictureSession& session, vtkPolyData* samples,
   bar->SetBarRatio(0.3);
   whole->AddViewProp(bar);
 
-  // Right: an axial (z) and a sagittal (x) slab through the centre, head-on.
+  // Right: an axial (z) and a sagittal (x) slab through the center, head-on.
   struct SlabView
   {
     int Axis;
@@ -469,7 +469,7 @@ bool WriteSamplesPicture(const PictureSession& session, vtkPolyData* samples,
   const SlabView views[2] = { { 2, "axial", 0.5, 1 }, { 0, "sagittal", 0.0, 2 } };
   for (const SlabView& v : views)
   {
-    auto slab = Slab(samples, colors, v.Axis, centre[v.Axis], half);
+    auto slab = Slab(samples, colors, v.Axis, center[v.Axis], half);
     vtkNew<vtkRenderer> renderer;
     renderer->SetViewport(split, v.ViewportY0, 1.0, v.ViewportY0 + 0.5);
     renderer->SetBackground(0.95, 0.95, 0.96);
@@ -477,10 +477,10 @@ bool WriteSamplesPicture(const PictureSession& session, vtkPolyData* samples,
     renderer->UseFXAAOn();
     vtkCamera* c = renderer->GetActiveCamera();
     c->ParallelProjectionOn();
-    c->SetFocalPoint(centre);
+    c->SetFocalPoint(center);
     // Axial: from above; sagittal: from the left side, anterior to the left.
     const double depth = std::max({ size[0], size[1], size[2], 1.0 });
-    double position[3] = { centre[0], centre[1], centre[2] };
+    double position[3] = { center[0], center[1], center[2] };
     position[v.Axis] += v.Axis == 2 ? depth : -depth;
     c->SetPosition(position);
     double up[3] = { 0.0, 0.0, 0.0 };
@@ -494,7 +494,7 @@ bool WriteSamplesPicture(const PictureSession& session, vtkPolyData* samples,
     renderer->ResetCameraClippingRange();
     const char axis = "xyz"[v.Axis];
     const std::string text = std::string(v.Name) + " slab " + axis + " = " +
-      Format("%.4g", centre[v.Axis]) + " \xC2\xB1 " + Format("%.3g", half) + ", seen from " +
+      Format("%.4g", center[v.Axis]) + " \xC2\xB1 " + Format("%.3g", half) + ", seen from " +
       (v.Axis == 2 ? "+" : "-") + axis + " (" + std::to_string(slab->GetNumberOfPoints()) +
       " points)";
     renderer->AddViewProp(Caption(text, 15, 0.03, 0.97));
@@ -562,7 +562,7 @@ bool WriteSpectrumPlot(const PictureSession& session, vtkTable* spectrum,
   const unsigned char blue[3] = { 31, 90, 180 };
   const unsigned char orange[3] = { 214, 100, 20 };
   const unsigned char red[3] = { 200, 30, 45 };
-  const unsigned char grey[3] = { 120, 120, 120 };
+  const unsigned char gray[3] = { 120, 120, 120 };
 
   vtkNew<vtkContextView> view;
   vtkRenderWindow* window = view->GetRenderWindow();
@@ -591,7 +591,7 @@ bool WriteSpectrumPlot(const PictureSession& session, vtkTable* spectrum,
   {
     whiteLevel = Segment(0.0, 1.0 - g, fMax, 1.0 - g);
     AddLine(powerChart, whiteLevel, "x", "y", ("white noise 1 - g = " + Format("%.3f", 1.0 - g)).c_str(),
-      grey, 1.5f, vtkPen::DASH_LINE);
+      gray, 1.5f, vtkPen::DASH_LINE);
   }
   if (std::isfinite(fg) && fg > 0.0)
   {
@@ -608,12 +608,12 @@ bool WriteSpectrumPlot(const PictureSession& session, vtkTable* spectrum,
   // Bottom: anisotropy in dB.
   vtkNew<vtkChartXY> anisotropyChart;
   const double aLow = std::floor(aMin - 1.0), aHigh = std::ceil(aMax + 1.0);
-  StyleChart(anisotropyChart, "Anisotropy (one realisation: isotropic noise is about 0 dB)",
+  StyleChart(anisotropyChart, "Anisotropy (one realization: isotropic noise is about 0 dB)",
     "anisotropy (dB)", fMax, aLow, aHigh);
   AddLine(anisotropyChart, anisotropyTable, "f", "dB", "Anisotropy (dB)", orange, 2.0f,
     vtkPen::SOLID_LINE);
   vtkSmartPointer<vtkTable> zeroLine = Segment(0.0, 0.0, fMax, 0.0), anisotropyMark;
-  AddLine(anisotropyChart, zeroLine, "x", "y", "0 dB", grey, 1.5f, vtkPen::DASH_LINE);
+  AddLine(anisotropyChart, zeroLine, "x", "y", "0 dB", gray, 1.5f, vtkPen::DASH_LINE);
   if (std::isfinite(fg) && fg > 0.0)
   {
     anisotropyMark = Segment(fg, aLow, fg, aHigh);

@@ -43,7 +43,7 @@ private:
 
 struct SamplesPicture
 {
-  /// Point array to colour by (1 component); empty or absent: `Density`.
+  /// Point array to color by (1 component); empty or absent: `Density`.
   std::string ColorArray;
   /// First line of the caption (e.g. the input's file name).
   std::string Caption;
@@ -55,9 +55,9 @@ struct SamplesPicture
 
 /**
  * Renders the sample points off screen and writes a PNG: on the left all
- * points in 3D (small spheres, coloured by SamplesPicture::ColorArray with a
- * colour bar), on the right an axial and a sagittal slab through the centre
- * seen head-on, where the even spacing and the density following the colour
+ * points in 3D (small spheres, colored by SamplesPicture::ColorArray with a
+ * color bar), on the right an axial and a sagittal slab through the center
+ * seen head-on, where the even spacing and the density following the color
  * can be seen. Returns false with `error` set when rendering or writing fails.
  */
 bool WriteSamplesPicture(const PictureSession& session, vtkPolyData* samples,

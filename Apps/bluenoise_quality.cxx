@@ -2,7 +2,7 @@
 // SPDX-License-Identifier: BSD-3-Clause
 // bluenoise-quality: the quality report of the sampling methods. For each
 // density level it measures L(g), S(g), T(g) and the mean anisotropy (dB,
-// shells 1 .. L/2) of single realisations on an L^3 cube, mean and standard
+// shells 1 .. L/2) of single realizations on an L^3 cube, mean and standard
 // deviation over seeds, for:
 //   Optimized, Paper, Fixed   the paper's error diffusion with that parameter set;
 //   Relaxed (default)         the sampler's defaults (relaxed error
@@ -90,7 +90,7 @@ std::vector<std::array<double, 3>> PoissonDisk(double L, double r, unsigned seed
   while (!active.empty())
   {
     const size_t pick = static_cast<size_t>(unit(random) * active.size()) % active.size();
-    const auto centre = points[active[pick]];
+    const auto center = points[active[pick]];
     bool placed = false;
     for (int t = 0; t < k && !placed; ++t)
     {
@@ -99,8 +99,8 @@ std::vector<std::array<double, 3>> PoissonDisk(double L, double r, unsigned seed
       const double phi = 2.0 * M_PI * unit(random);
       const double s = std::sqrt(1.0 - z * z);
       const double radius = r * std::cbrt(1.0 + 7.0 * unit(random));
-      const std::array<double, 3> p = { centre[0] + radius * s * std::cos(phi),
-        centre[1] + radius * s * std::sin(phi), centre[2] + radius * z };
+      const std::array<double, 3> p = { center[0] + radius * s * std::cos(phi),
+        center[1] + radius * s * std::sin(phi), center[2] + radius * z };
       if (p[0] < 0 || p[1] < 0 || p[2] < 0 || p[0] >= L || p[1] >= L || p[2] >= L || !fits(p))
       {
         continue;
@@ -378,7 +378,7 @@ int main(int argc, char* argv[])
 
   std::cout << "Whole " << size << "^3 cube, " << seeds << " seeds (" << firstSeed << ".."
             << firstSeed + seeds - 1 << "), w = " << weight
-            << ", single realisations: mean ± standard deviation over the seeds. "
+            << ", single realizations: mean ± standard deviation over the seeds. "
                "Anisotropy: mean over shells 1.."
             << size / 2 << " in dB.\n\n";
   std::cout << "| level | method | T(g) | L(g) | S(g) | anisotropy dB |\n"

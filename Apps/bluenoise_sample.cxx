@@ -96,7 +96,7 @@ const char* const Footer =
   "  metrics.csv   the scalar metrics of that spectrum, one 'Metric,Value' row each:\n"
   "                NumberOfPoints, Density (g), PrincipalFrequency (f_g),\n"
   "                LowFrequencyRatio (L), SymmetryCorrelation, Symmetry (S),\n"
-  "                TargetValue (T), Realisations, GridDimensions (space separated),\n"
+  "                TargetValue (T), Realizations, GridDimensions (space separated),\n"
   "                then the run's Seed and Parameters\n"
   "  samples.png   the points rendered off screen: all in 3D, and an axial and a\n"
   "                sagittal slab through the center, colored by the sampled array\n"

@@ -2,7 +2,7 @@
 # SPDX-License-Identifier: BSD-3-Clause
 """Particle-based volume rendering with blue-noise particles (paper Fig. 12).
 
-Renders a volume three ways with the same colour and opacity transfer
+Renders a volume three ways with the same color and opacity transfer
 functions and the same camera, and measures the particle images against the
 ray-cast one:
 
@@ -37,8 +37,8 @@ PBVR replaces the absorbing medium by opaque particles of radius r with number
 density rho: a ray crosses a particle within ds with probability
 rho * pi r^2 * ds, so the expected image of opaque particles is the volume
 rendering integral when rho(x) = tau(x) / (pi r^2), each particle showing the
-colour of its voxel. With at most one particle per voxel (the sampler's
-points are voxel centres), the probability that a voxel holds a particle is
+color of its voxel. With at most one particle per voxel (the sampler's
+points are voxel centers), the probability that a voxel holds a particle is
 g = rho h^3 = -ln(1 - alpha) * h^2 / (pi r^2).
 So the sampler runs with DensityMapping = "Transfer Function", its transfer
 function the "density" function g0(x) = -ln(1 - alpha(x)) (--density extinction,
@@ -54,10 +54,10 @@ would exceed 1 are clamped by the sampler (the script prints how many).
 The particles are drawn with the Point Gaussian representation, preset
 "Plain circle" (opaque discs of radius r facing the camera, depth tested, no
 sorting), unlit (Ambient 1, Diffuse 0) like the unshaded volume rendering,
-coloured by their carried value through the same colour transfer function.
+colored by their carried value through the same color transfer function.
 With --jitter 1 (default) each particle is moved by a uniform random offset of
 up to half a voxel per axis (the sampler's Jitter), as PBVR places particles
-anywhere in a cell: particles at voxel centres line up in columns when the
+anywhere in a cell: particles at voxel centers line up in columns when the
 view is close to a grid axis (a lattice pattern and too little coverage). One set of particles is one PBVR "ensemble"; --ensembles K averages the
 images of K independent particle sets (seeds seed .. seed + K - 1), Sakamoto's
 repetition level.
@@ -118,9 +118,9 @@ COVERED_ALPHA = 0.02
 
 # ---------------------------------------------------------------------------
 # Transfer functions for an MRI brain (T1, brain extracted), relative to the
-# value range [lo, hi]: background and CSF transparent, grey matter faint,
+# value range [lo, hi]: background and CSF transparent, gray matter faint,
 # white matter denser. Fractions of the range of ch2bet (0..133): CSF < 0.35,
-# grey matter about 0.55..0.7, white matter about 0.75..0.9.
+# gray matter about 0.55..0.7, white matter about 0.75..0.9.
 def brain_transfer_functions(lo, hi):
     def v(f):
         return lo + f * (hi - lo)
@@ -366,7 +366,7 @@ def main(argv=None):
                         help="Point Gaussian ShaderPreset (default 'Plain circle')")
     parser.add_argument("--jitter", type=int, choices=[0, 1], default=1,
                         help="1 (default): move each particle uniformly within its voxel; "
-                             "0: particles at voxel centres")
+                             "0: particles at voxel centers")
     parser.add_argument("--reference-mode", default="GPU Based",
                         choices=["GPU Based", "Ray Cast Only", "Smart"],
                         help="VolumeRenderingMode of the reference (default 'GPU Based')")
@@ -434,7 +434,7 @@ def main(argv=None):
         vol.Shade = 0
         vol.VolumeRenderingMode = args.reference_mode
         # The image on black, and the accumulated opacity from a second shot on a
-        # transparent background (whose colours are not premultiplied).
+        # transparent background (whose colors are not premultiplied).
         ref = scene.shoot(os.path.join(paneldir, "reference.png"), check=check_tfs)[..., :3]
         ref_rgba = scene.shoot(os.path.join(paneldir, "reference_alpha.png"), transparent=True,
                                check=check_tfs)
@@ -467,7 +467,7 @@ def main(argv=None):
                     s.DensityScale = scale
                     s.Seed = args.seed + e
                     # Each particle anywhere in its voxel (PBVR places particles
-                    # anywhere in a cell): voxel-centre particles line up in
+                    # anywhere in a cell): voxel-center particles line up in
                     # columns when the view is near an axis of the grid.
                     s.Jitter = args.jitter
                     s.UpdatePipeline()
@@ -479,9 +479,9 @@ def main(argv=None):
                     # default Show() look for a representation proxy called "Points".
                     d = Show(shown, scene.view, "GeometryRepresentation")
                     d.SetRepresentationType("Point Gaussian")
-                    # Not ColorBy(): it would rescale the shared colour and opacity
+                    # Not ColorBy(): it would rescale the shared color and opacity
                     # functions to the particles' value range (only values with
-                    # opacity > 0), shifting every particle colour.
+                    # opacity > 0), shifting every particle color.
                     d.ColorArrayName = ["POINTS", array]
                     d.LookupTable = lut
                     d.MapScalars = 1

@@ -5,13 +5,13 @@
 Particles drawn by the BlueNoiseSampling plugin's Error Diffusion Sampler with
 the opacity transfer function as density (Sakamoto's particle-based volume
 rendering, with blue-noise instead of hit-and-miss particles), shown as opaque
-Point Gaussian discs coloured by the colour transfer function.
+Point Gaussian discs colored by the color transfer function.
 
 Use in the ParaView GUI:
 1. Tools > Manage Plugins > Load New: BlueNoiseSampling.so (once; tick Auto Load).
 2. Macros > Import new macro...: this file (it appears in the Macros toolbar).
-3. Open a volume (image data), colour it by the array you want (e.g. the Volume
-   representation) and edit its colour and opacity transfer functions.
+3. Open a volume (image data), color it by the array you want (e.g. the Volume
+   representation) and edit its color and opacity transfer functions.
 4. Select the volume in the Pipeline Browser and run the macro. It adds an
    "Error Diffusion Sampler" (Density Mapping = Transfer Function, the array's
    opacity function) shown as Point Gaussian particles in the active render
@@ -49,7 +49,7 @@ def _sampler_constructor():
     return ctor
 
 
-def _colour_array(source, view):
+def _color_array(source, view):
     rep = pvs.GetDisplayProperties(source, view) if view is not None else None
     if rep is not None and rep.ColorArrayName and rep.ColorArrayName[1]:
         return rep.ColorArrayName[1]
@@ -83,7 +83,7 @@ def setup_pbvr(source=None, view=None, target=TARGET_PARTICLES, method=METHOD, s
                            "(Tools > Manage Plugins > Load New)")
     if not source.GetDataInformation().DataInformation.IsDataStructured():
         raise RuntimeError("the active source is not image data")
-    array = _colour_array(source, view)
+    array = _color_array(source, view)
     if array is None:
         raise RuntimeError("the active source has no point-data array")
     lut = pvs.GetColorTransferFunction(array)
@@ -110,7 +110,7 @@ def setup_pbvr(source=None, view=None, target=TARGET_PARTICLES, method=METHOD, s
 
     shown = sampler
     if jitter:
-        # Voxel-centre particles line up in columns when the view is near a grid
+        # Voxel-center particles line up in columns when the view is near a grid
         # axis (a visible lattice, too little coverage); PBVR places particles
         # anywhere in their cell: a random offset of up to half a voxel per axis.
         offsets = pvs.RandomAttributes(Input=sampler)
@@ -128,7 +128,7 @@ def setup_pbvr(source=None, view=None, target=TARGET_PARTICLES, method=METHOD, s
     # makes ParaView 5.11's default Show() fail for this filter.
     rep = pvs.Show(shown, view, "GeometryRepresentation")
     rep.SetRepresentationType("Point Gaussian")
-    # Not ColorBy(): it would rescale the colour and opacity functions to the
+    # Not ColorBy(): it would rescale the color and opacity functions to the
     # particles' range.
     rep.ColorArrayName = ["POINTS", array]
     rep.LookupTable = lut

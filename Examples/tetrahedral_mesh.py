@@ -411,7 +411,7 @@ def tetrahedralize(points_pd, image, array, g, restrict=DEFAULT_RESTRICT,
         dl = vtkDelaunay3D()
         dl.SetInputData(shuffled)
         # Merge only coincident points (the default 0.001 of the diagonal
-        # could merge neighbouring voxels of a large volume).
+        # could merge neighboring voxels of a large volume).
         dl.SetTolerance(1e-7)
         if "alpha" in rules:
             dl.SetAlpha(alpha_factor * spacing)

@@ -66,7 +66,7 @@ void vtkBlueNoiseRelaxation::Begin(int nx, int ny, int firstZ, std::uint64_t see
 }
 
 //------------------------------------------------------------------------------
-// Layers already final are still read (as neighbours) while in the ring;
+// Layers already final are still read (as neighbors) while in the ring;
 // only the layers from Finalized on can change.
 inline vtkBlueNoiseRelaxation::Slot* vtkBlueNoiseRelaxation::Find(int z)
 {

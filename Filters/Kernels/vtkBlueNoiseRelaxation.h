@@ -8,7 +8,7 @@
  * Error diffusion places its points well on the whole but leaves pairs closer
  * than the blue-noise spacing now and then; that is most of what it has more
  * than a Poisson-disk set below the principal frequency. This pass moves each
- * such point by one voxel, to where it is farthest from its neighbours:
+ * such point by one voxel, to where it is farthest from its neighbors:
  *
  * For every sample p of a layer whose density g(p) is in (0, 1/4] (above, the
  * moves lower L(g) still but raise S(g): at g = 0.35, 0.00036 to 0.00065 on
@@ -17,7 +17,7 @@
  * samples at that density and d(v) the distance from voxel v to the nearest
  * other sample within the search radius w = min(ceil(0.87 s) + 1, 8) voxels
  * (w + 1 when there is none), if d(p)^2 < 0.75 s^2, p moves to the one of its
- * six face neighbours c that is empty, has 0 < g(c) <= 1/4 and
+ * six face neighbors c that is empty, has 0 < g(c) <= 1/4 and
  * |g(c) - g(p)| <= g(p) / 64, lies in the layers given (between the first
  * and the last), and has the largest d(c), provided d(c) > d(p) (the first in
  * a hashed order among equals). Allowed to a voxel of another density,
@@ -25,8 +25,8 @@
  * more points in the 16 layers below a step from g = 0.2 to 0.02), and,
  * along a gradient, one way more than the other (3 % on a ramp with a
  * tolerance of 1/8). Moves to
- * the 6 face neighbours keep the spectrum isotropic (moves to the 26
- * neighbours reach a lower L(g) but add up to 0.8 dB of anisotropy).
+ * the 6 face neighbors keep the spectrum isotropic (moves to the 26
+ * neighbors reach a lower L(g) but add up to 0.8 dB of anisotropy).
  *
  * Measured on 128^3 cubes (Table 1, 2 seeds): L(g) from 0.0903 to 0.0696 at
  * g = 8/255 and from 0.1826 to 0.1411 at 16/255 (a Poisson-disk set of the

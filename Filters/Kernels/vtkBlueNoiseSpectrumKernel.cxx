@@ -521,12 +521,12 @@ Accumulator SumShells(const ShellGeometry& g, const PowerView& power, double h2)
   return sum;
 }
 
-void FillShells(const Accumulator& sum, const ShellGeometry& g, int realisations,
+void FillShells(const Accumulator& sum, const ShellGeometry& g, int realizations,
   vtkBlueNoiseSpectrumKernel::Result& out)
 {
   constexpr double floorDB = vtkBlueNoiseSpectrumKernel::AnisotropyFloorDB;
   // The sums are over the summed power; dividing once here averages it.
-  const double invR = 1.0 / realisations;
+  const double invR = 1.0 / realizations;
   const std::size_t nShells = static_cast<std::size_t>(g.MaxShell);
   for (auto* column : { &out.Frequency, &out.RadialPower, &out.Anisotropy, &out.AnisotropyDB,
          &out.SrapsXY, &out.SrapsXZ, &out.SrapsYZ })
@@ -673,33 +673,33 @@ void vtkBlueNoiseSpectrumKernel::SetWeight(double w)
 //------------------------------------------------------------------------------
 void vtkBlueNoiseSpectrumKernel::Reset()
 {
-  this->Realisations = 0;
-  this->ConstantRealisations = 0;
+  this->Realizations = 0;
+  this->ConstantRealizations = 0;
   this->PointSum = 0.0;
   this->PowerInTransform = false;
 }
 
 //------------------------------------------------------------------------------
-bool vtkBlueNoiseSpectrumKernel::AddRealisation(const unsigned char* mask, std::string* error)
+bool vtkBlueNoiseSpectrumKernel::AddRealization(const unsigned char* mask, std::string* error)
 {
-  return this->AddRealisationTemplate(mask, error);
+  return this->AddRealizationTemplate(mask, error);
 }
 
 //------------------------------------------------------------------------------
-bool vtkBlueNoiseSpectrumKernel::AddRealisation(const float* counts, std::string* error)
+bool vtkBlueNoiseSpectrumKernel::AddRealization(const float* counts, std::string* error)
 {
-  return this->AddRealisationTemplate(counts, error);
+  return this->AddRealizationTemplate(counts, error);
 }
 
 //------------------------------------------------------------------------------
-bool vtkBlueNoiseSpectrumKernel::AddRealisation(const double* counts, std::string* error)
+bool vtkBlueNoiseSpectrumKernel::AddRealization(const double* counts, std::string* error)
 {
-  return this->AddRealisationTemplate(counts, error);
+  return this->AddRealizationTemplate(counts, error);
 }
 
 //------------------------------------------------------------------------------
 template <typename T>
-bool vtkBlueNoiseSpectrumKernel::AddRealisationTemplate(const T* values, std::string* error)
+bool vtkBlueNoiseSpectrumKernel::AddRealizationTemplate(const T* values, std::string* error)
 {
   if (!this->Transform)
   {
@@ -713,7 +713,7 @@ bool vtkBlueNoiseSpectrumKernel::AddRealisationTemplate(const T* values, std::st
   }
   const int lx = this->Dimensions[0];
   const int ly = this->Dimensions[1];
-  return this->TransformRealisation(
+  return this->TransformRealization(
     [values, lx, ly](int z, double* slab, double* rowSums, SlabCheck& check)
     {
       const std::size_t padX = 2 * (static_cast<std::size_t>(lx) / 2 + 1);
@@ -771,7 +771,7 @@ bool vtkBlueNoiseSpectrumKernel::AddSamples(
   }
   // Samples on one voxel add up in single precision, in the order given: the
   // values a float count volume filled in that order would hold.
-  return this->TransformRealisation(
+  return this->TransformRealization(
     [&](int z, double* slab, double* rowSums, SlabCheck& check)
     {
       const std::size_t padX = 2 * (static_cast<std::size_t>(lx) / 2 + 1);
@@ -796,7 +796,7 @@ bool vtkBlueNoiseSpectrumKernel::AddSamples(
 
 //------------------------------------------------------------------------------
 template <typename FillSlab>
-bool vtkBlueNoiseSpectrumKernel::TransformRealisation(FillSlab fillSlab, std::string* error)
+bool vtkBlueNoiseSpectrumKernel::TransformRealization(FillSlab fillSlab, std::string* error)
 {
   // The first realization's power is in the transform buffer: move it aside
   // before this one overwrites it (and so that a rejected one changes nothing).
@@ -848,25 +848,25 @@ bool vtkBlueNoiseSpectrumKernel::TransformRealisation(FillSlab fillSlab, std::st
   if (n <= 0.0)
   {
     SetError(
-      error, "the realisation has no points (N = 0): the spectrum P = |B|^2 / N is undefined");
+      error, "the realization has no points (N = 0): the spectrum P = |B|^2 / N is undefined");
     return false;
   }
   if (low == high)
   {
     // A constant volume has no power off DC: the transform would only add
     // rounding noise, so its contribution is exactly zero.
-    if (this->Realisations == 0)
+    if (this->Realizations == 0)
     {
       this->ZeroPower();
     }
-    ++this->ConstantRealisations;
+    ++this->ConstantRealizations;
   }
   else
   {
     this->TransformColumns(1.0 / n);
   }
-  this->PowerInTransform = (this->Realisations == 0);
-  ++this->Realisations;
+  this->PowerInTransform = (this->Realizations == 0);
+  ++this->Realizations;
   this->PointSum += n;
   return true;
 }
@@ -880,7 +880,7 @@ void vtkBlueNoiseSpectrumKernel::TransformColumns(double invN)
   const auto columnPlan = static_cast<fftw_plan>(this->ColumnPlan);
   const std::size_t columns = this->HalfSize / lz;
   const vtkIdType blocks = static_cast<vtkIdType>((columns + ColumnBlock - 1) / ColumnBlock);
-  const bool first = (this->Realisations == 0);
+  const bool first = (this->Realizations == 0);
   vtkSMPThreadLocal<ColumnScratch> scratch;
   const vtkIdType grain = std::max<vtkIdType>(1, ValuesPerTask / (ColumnBlock * lz));
   vtkSMPTools::For(0, blocks, grain,
@@ -946,7 +946,7 @@ bool vtkBlueNoiseSpectrumKernel::MovePowerAside(std::string* error)
     {
       std::ostringstream msg;
       msg << "cannot allocate " << this->HalfSize * sizeof(double)
-          << " bytes to average realisations";
+          << " bytes to average realizations";
       SetError(error, msg.str());
       return false;
     }
@@ -996,15 +996,15 @@ const double* vtkBlueNoiseSpectrumKernel::PowerLayout(std::size_t strides[3]) co
 //------------------------------------------------------------------------------
 bool vtkBlueNoiseSpectrumKernel::Compute(Result& out, std::string* error) const
 {
-  if (this->Realisations == 0)
+  if (this->Realizations == 0)
   {
-    SetError(error, "no realisation has been added");
+    SetError(error, "no realization has been added");
     return false;
   }
   const ShellGeometry geometry(this->Dimensions);
   const double voxels =
     static_cast<double>(geometry.Lx) * static_cast<double>(geometry.Ly) * geometry.Lz;
-  const double meanPoints = this->PointSum / this->Realisations;
+  const double meanPoints = this->PointSum / this->Realizations;
   const double density = meanPoints / voxels;
   // |f| < f_g = cbrt(h) is tested as |f|^6 < h^2: cbrt is not correctly
   // rounded (cbrt(2^-9) < 1/8 in glibc), the cubes are exact on dyadic grids.
@@ -1013,10 +1013,10 @@ bool vtkBlueNoiseSpectrumKernel::Compute(Result& out, std::string* error) const
   const PowerView power(this->PowerLayout(strides), strides);
   const Accumulator sum = SumShells(geometry, power, h * h);
 
-  FillShells(sum, geometry, this->Realisations, out);
+  FillShells(sum, geometry, this->Realizations, out);
   const double correlation = SymmetryCorrelation(sum, geometry, out);
   std::copy(this->Dimensions, this->Dimensions + 3, out.Dimensions);
-  out.Realisations = this->Realisations;
+  out.Realizations = this->Realizations;
   out.NumberOfPoints = meanPoints;
   out.Density = density;
   out.PrincipalFrequency = PrincipalFrequency(density);
@@ -1025,9 +1025,9 @@ bool vtkBlueNoiseSpectrumKernel::Compute(Result& out, std::string* error) const
   out.Symmetry = 1.0 - correlation;
   out.TargetValue = this->Weight * out.LowFrequencyRatio + (1.0 - this->Weight) * out.Symmetry;
   out.Warning.clear();
-  if (this->ConstantRealisations == this->Realisations)
+  if (this->ConstantRealizations == this->Realizations)
   {
-    out.Warning = "every voxel holds the same count in every realisation (g = 1 for a mask): "
+    out.Warning = "every voxel holds the same count in every realization (g = 1 for a mask): "
                   "there is no power off DC, so L = 0, every anisotropy is 0 and S = 1 "
                   "(correlation of constant curves taken as 0)";
   }
@@ -1035,29 +1035,29 @@ bool vtkBlueNoiseSpectrumKernel::Compute(Result& out, std::string* error) const
 }
 
 //------------------------------------------------------------------------------
-bool vtkBlueNoiseSpectrumKernel::GetCentredPowerSpectrum(std::vector<double>& out) const
+bool vtkBlueNoiseSpectrumKernel::GetCenteredPowerSpectrum(std::vector<double>& out) const
 {
-  if (this->Realisations == 0)
+  if (this->Realizations == 0)
   {
     out.clear();
     return false;
   }
   out.resize(
     static_cast<std::size_t>(this->Dimensions[0]) * this->Dimensions[1] * this->Dimensions[2]);
-  return this->GetCentredPowerSpectrum(out.data());
+  return this->GetCenteredPowerSpectrum(out.data());
 }
 
 //------------------------------------------------------------------------------
-bool vtkBlueNoiseSpectrumKernel::GetCentredPowerSpectrum(double* out) const
+bool vtkBlueNoiseSpectrumKernel::GetCenteredPowerSpectrum(double* out) const
 {
-  if (this->Realisations == 0 || !out)
+  if (this->Realizations == 0 || !out)
   {
     return false;
   }
   const int lx = this->Dimensions[0];
   const int ly = this->Dimensions[1];
   const int lz = this->Dimensions[2];
-  const double invR = 1.0 / this->Realisations;
+  const double invR = 1.0 / this->Realizations;
   std::size_t strides[3];
   const PowerView power(this->PowerLayout(strides), strides);
   const std::size_t step = power.Step;
@@ -1091,9 +1091,9 @@ bool vtkBlueNoiseSpectrumKernel::GetCentredPowerSpectrum(double* out) const
 }
 
 //------------------------------------------------------------------------------
-double* vtkBlueNoiseSpectrumKernel::NewCentredPowerSpectrum() const
+double* vtkBlueNoiseSpectrumKernel::NewCenteredPowerSpectrum() const
 {
-  if (this->Realisations == 0)
+  if (this->Realizations == 0)
   {
     return nullptr;
   }
@@ -1101,7 +1101,7 @@ double* vtkBlueNoiseSpectrumKernel::NewCentredPowerSpectrum() const
     static_cast<std::size_t>(this->Dimensions[0]) * this->Dimensions[1] * this->Dimensions[2]);
   if (out)
   {
-    this->GetCentredPowerSpectrum(out);
+    this->GetCenteredPowerSpectrum(out);
   }
   return out;
 }
@@ -1116,5 +1116,5 @@ bool vtkBlueNoiseSpectrumKernel::Evaluate(
     return false;
   }
   kernel.SetWeight(weight);
-  return kernel.AddRealisation(mask, error) && kernel.Compute(out, error);
+  return kernel.AddRealization(mask, error) && kernel.Compute(out, error);
 }

@@ -73,7 +73,7 @@
  * and the shell statistics are summed in fixed chunks added in a fixed order:
  * every reported value is the same, to the last bit, whatever the number of
  * threads. Measured on the 2-core development VM for one 512^3 mask at
- * g = 0.05, AddRealisation + Compute with the buffers already committed: about
+ * g = 0.05, AddRealization + Compute with the buffers already committed: about
  * 1.0 s on one thread, 0.53 s on two (BenchmarkSpectrum, Reused); committing
  * the 1.08 GB of a new kernel took 0.1 s to 2.4 s more on a quiet machine,
  * depending on the huge pages the system had at hand.
@@ -123,7 +123,7 @@ public:
     std::vector<double> SrapsYZ;      ///< Eq. 10
     std::vector<long long> ShellCount;
     int Dimensions[3] = { 0, 0, 0 };
-    int Realisations = 0;
+    int Realizations = 0;
     double NumberOfPoints = 0.0;      ///< mean N over the realizations
     double Density = 0.0;             ///< g
     double PrincipalFrequency = 0.0;  ///< f_g, Eq. 6
@@ -154,22 +154,22 @@ public:
 
   /// Forget the accumulated realizations; keep the shape and the buffers.
   void Reset();
-  int GetNumberOfRealisations() const { return this->Realisations; }
+  int GetNumberOfRealizations() const { return this->Realizations; }
 
   /**
    * Add one realization of Lx * Ly * Lz counts, x fastest (a 0/1 mask has one
    * point per set voxel; any value is a count). Returns false and leaves the accumulated state
    * unchanged when no shape is set, N = 0, or a count is negative or not finite.
    */
-  bool AddRealisation(const unsigned char* mask, std::string* error = nullptr);
-  bool AddRealisation(const float* counts, std::string* error = nullptr);
-  bool AddRealisation(const double* counts, std::string* error = nullptr);
+  bool AddRealization(const unsigned char* mask, std::string* error = nullptr);
+  bool AddRealization(const float* counts, std::string* error = nullptr);
+  bool AddRealization(const double* counts, std::string* error = nullptr);
 
   /**
    * Add one realization given as `count` samples: the voxel index of each
    * (x fastest, as above) and its weight (`weights` null: 1 each). Samples on
    * one voxel add up in single precision in the order given, so the result is
-   * that of AddRealisation(const float*) on a count volume filled in that
+   * that of AddRealization(const float*) on a count volume filled in that
    * order, without the volume. Returns false and leaves the accumulated state
    * unchanged for an index outside the grid, a negative or non-finite weight
    * or N = 0.
@@ -186,9 +186,9 @@ public:
    * the frequency (i - floor(L / 2)) / L; the DC value is 0. Returns false (and
    * empties `out`) when no realization has been added.
    */
-  bool GetCentredPowerSpectrum(std::vector<double>& out) const;
+  bool GetCenteredPowerSpectrum(std::vector<double>& out) const;
   /// The same into caller-owned memory of Lx * Ly * Lz values (untouched on false).
-  bool GetCentredPowerSpectrum(double* out) const;
+  bool GetCenteredPowerSpectrum(double* out) const;
 
   /**
    * The same in new memory, committed in bulk like the kernel's own buffers
@@ -196,7 +196,7 @@ public:
    * VTK_DATA_ARRAY_FREE). Null when no realization has been added or the
    * memory cannot be allocated.
    */
-  double* NewCentredPowerSpectrum() const;
+  double* NewCenteredPowerSpectrum() const;
 
   /**
    * One-call evaluation of a single mask for the optimizer. Reuses one kernel
@@ -208,11 +208,11 @@ public:
 
 private:
   template <typename T>
-  bool AddRealisationTemplate(const T* values, std::string* error);
+  bool AddRealizationTemplate(const T* values, std::string* error);
   // Fills every z slab with fillSlab(z, slab, rowSums, check), checks the counts
   // and transforms them; the power goes where PowerLayout() says.
   template <typename FillSlab>
-  bool TransformRealisation(FillSlab fillSlab, std::string* error);
+  bool TransformRealization(FillSlab fillSlab, std::string* error);
   void TransformColumns(double invN);
   void ZeroPower();
   bool MovePowerAside(std::string* error);
@@ -223,8 +223,8 @@ private:
 
   int Dimensions[3] = { 0, 0, 0 };
   double Weight = DefaultWeight;
-  int Realisations = 0;
-  int ConstantRealisations = 0; // realizations with no power off DC
+  int Realizations = 0;
+  int ConstantRealizations = 0; // realizations with no power off DC
   double PointSum = 0.0;        // sum of N over the realizations
   std::size_t HalfSize = 0;     // Lz * Ly * (Lx / 2 + 1)
   std::size_t SlabStride = 0;   // doubles from one z slab of Transform to the next

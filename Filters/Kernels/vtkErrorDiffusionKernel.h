@@ -46,7 +46,7 @@
  *
  * Voxels with g <= 0 (NaN included) are never sampled and g >= 1 always
  * sampled. Neither takes part in the diffusion: they are treated like the
- * missing neighbours at a face of the volume. The error of a voxel goes to
+ * missing neighbors at a face of the volume. The error of a voxel goes to
  * its active targets (0 < g < 1, inside the volume) with their weights
  * renormalized to sum 1, so an empty region stays empty, no error leaks
  * across it, and the rim of a support is sampled like its inside. Deciding

@@ -59,7 +59,7 @@ bool Measure(const vtkErrorDiffusionParameterTable& table, double level,
     {
       kernel.ProcessLayer(density.data(), z + 1 < n ? density.data() : nullptr, mask.data() + z * layer);
     }
-    if (!whole.AddRealisation(mask.data(), error))
+    if (!whole.AddRealization(mask.data(), error))
     {
       return false;
     }
@@ -77,7 +77,7 @@ bool Measure(const vtkErrorDiffusionParameterTable& table, double level,
           }
         }
       }
-      if (!interior->AddRealisation(inside.data(), error))
+      if (!interior->AddRealization(inside.data(), error))
       {
         return false;
       }

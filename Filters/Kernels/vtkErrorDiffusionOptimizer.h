@@ -2,21 +2,21 @@
 // SPDX-License-Identifier: BSD-3-Clause
 /**
  * @class   vtkErrorDiffusionOptimizer
- * @brief   The paper's parameter search: minimise T(g) per key density level.
+ * @brief   The paper's parameter search: minimize T(g) per key density level.
  *
  * For one density level g the objective is the blue-noise target
  * T(g) = w L(g) + (1 - w) S(g) (paper Eq. 5) of what the sampler produces on
  * a constant-density cube: the sampler kernel (vtkErrorDiffusionKernel, the
  * boundary handling users get included) samples a GridSize^3 cube once per
- * seed, the periodograms of the realisations are averaged, and the metric is
+ * seed, the periodograms of the realizations are averaged, and the metric is
  * vtkBlueNoiseSpectrumKernel's (one implementation, shared with the
  * vtkBlueNoiseSpectrum filter). The seeds are the same for every candidate
  * (common random numbers), so the objective is a deterministic function of the
  * parameters and the simplex compares like with like.
  *
  * The search variables are the six coefficients (their absolute values; only
- * their ratios matter, the start point is normalised to sum 1) and m(g) (its
- * absolute value), minimised with vtkNelderMeadMinimizer from a start key
+ * their ratios matter, the start point is normalized to sum 1) and m(g) (its
+ * absolute value), minimized with vtkNelderMeadMinimizer from a start key
  * (typically the Table 1 parameters at that level).
  *
  * Evaluate() measures any parameter table at any level with the same recipe;
@@ -36,7 +36,7 @@ public:
   struct Settings
   {
     int GridSize = 64;        ///< the cube's edge, voxels
-    int Seeds = 4;            ///< realisations averaged per evaluation
+    int Seeds = 4;            ///< realizations averaged per evaluation
     int FirstSeed = 0;        ///< seeds FirstSeed .. FirstSeed + Seeds - 1
     double Weight = 0.02;     ///< w of Eq. 5
     int MaximumEvaluations = 400;
@@ -82,7 +82,7 @@ public:
     const Settings& settings, Evaluation& result, bool interior = false,
     std::string* error = nullptr);
 
-  /// Minimise T at one level from `start` (its Level field is ignored).
+  /// Minimize T at one level from `start` (its Level field is ignored).
   static LevelResult OptimizeLevel(double level, const vtkErrorDiffusionParameterTable::Key& start,
     const Settings& settings, const Progress& progress = nullptr);
 

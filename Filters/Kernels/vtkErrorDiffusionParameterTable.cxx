@@ -181,7 +181,7 @@ bool vtkErrorDiffusionParameterTable::SetKeys(const std::vector<Key>& keys, std:
 //------------------------------------------------------------------------------
 void vtkErrorDiffusionParameterTable::BuildSegments()
 {
-  this->Normalised.clear();
+  this->Normalized.clear();
   for (const Key& k : this->Keys)
   {
     double sum = 0.0;
@@ -195,7 +195,7 @@ void vtkErrorDiffusionParameterTable::BuildSegments()
       p.Weights[c] = static_cast<float>(k.Coefficients[c] / sum);
     }
     p.Modulation = static_cast<float>(k.Modulation);
-    this->Normalised.push_back(p);
+    this->Normalized.push_back(p);
   }
 }
 
@@ -203,7 +203,7 @@ void vtkErrorDiffusionParameterTable::BuildSegments()
 vtkErrorDiffusionParameterTable::Parameters vtkErrorDiffusionParameterTable::Evaluate(
   double g) const
 {
-  if (this->Normalised.empty())
+  if (this->Normalized.empty())
   {
     return Parameters();
   }
@@ -216,11 +216,11 @@ vtkErrorDiffusionParameterTable::Parameters vtkErrorDiffusionParameterTable::Eva
   const size_t n = this->Keys.size();
   if (level <= this->Keys.front().Level)
   {
-    return this->Normalised.front();
+    return this->Normalized.front();
   }
   if (level >= this->Keys.back().Level)
   {
-    return this->Normalised.back();
+    return this->Normalized.back();
   }
   // At most 17 keys: a linear search is as fast as anything else here.
   size_t i = 0;
@@ -231,8 +231,8 @@ vtkErrorDiffusionParameterTable::Parameters vtkErrorDiffusionParameterTable::Eva
   const double l0 = this->Keys[i].Level;
   const double l1 = this->Keys[i + 1].Level;
   const float t = static_cast<float>((level - l0) / (l1 - l0));
-  const Parameters& p0 = this->Normalised[i];
-  const Parameters& p1 = this->Normalised[i + 1];
+  const Parameters& p0 = this->Normalized[i];
+  const Parameters& p1 = this->Normalized[i + 1];
   Parameters p;
   for (int c = 0; c < NumberOfCoefficients; ++c)
   {

@@ -11,10 +11,10 @@
  * Evaluate() returns the parameters for any density g in [0, 1]:
  * - g > 0.5 uses the parameters of 1 - g (the minority voxels of g and 1 - g
  *   share one distribution, paper section 4.2);
- * - between two keys the normalised coefficients A/M and m are interpolated
+ * - between two keys the normalized coefficients A/M and m are interpolated
  *   linearly; below the first key and above the last one the nearest key holds.
  *
- * Built-in tables: Paper() is Table 1 verbatim; Fixed() is the un-optimised
+ * Built-in tables: Paper() is Table 1 verbatim; Fixed() is the un-optimized
  * baseline of the paper's Fig. 8 (4, 2, 4, 2, 2, 2 and m = 1); Optimized() is
  * the result of this project's own search.
  *
@@ -30,7 +30,7 @@
  * non-negative.
  *
  * This is a plain C++ value type, not a vtkObject: it is cheap to copy and is
- * shared by the sampler, its kernel and the parameter optimiser.
+ * shared by the sampler, its kernel and the parameter optimizer.
  */
 #ifndef vtkErrorDiffusionParameterTable_h
 #define vtkErrorDiffusionParameterTable_h
@@ -64,7 +64,7 @@ public:
     double Modulation = 0.0;                                 ///< m(g)
   };
 
-  /// Parameters at one density: normalised weights (sum 1) and m(g).
+  /// Parameters at one density: normalized weights (sum 1) and m(g).
   struct Parameters
   {
     std::array<float, NumberOfCoefficients> Weights{};
@@ -109,8 +109,8 @@ private:
   void BuildSegments();
 
   std::vector<Key> Keys;
-  // Per key: normalised weights and m, so Evaluate only interpolates.
-  std::vector<Parameters> Normalised;
+  // Per key: normalized weights and m, so Evaluate only interpolates.
+  std::vector<Parameters> Normalized;
 };
 
 #endif

@@ -2,9 +2,9 @@
 // SPDX-License-Identifier: BSD-3-Clause
 /**
  * @class   vtkNelderMeadMinimizer
- * @brief   Derivative-free minimisation with the Nelder-Mead simplex.
+ * @brief   Derivative-free minimization with the Nelder-Mead simplex.
  *
- * Minimises f: R^n -> R from a start point and an initial step per
+ * Minimizes f: R^n -> R from a start point and an initial step per
  * coordinate (the start simplex is the start point plus one step along each
  * axis), with the usual coefficients: reflection 1, expansion 2, contraction
  * 1/2, shrink 1/2 (Lagarias et al. 1998). It stops after MaximumEvaluations

@@ -8,7 +8,7 @@
 
 namespace
 {
-// The 26 neighbour offsets, nearest first: the 6 faces, the 12 edges, the 8
+// The 26 neighbor offsets, nearest first: the 6 faces, the 12 edges, the 8
 // corners, each group in index order.
 struct Offsets
 {
@@ -37,17 +37,17 @@ struct Offsets
     }
   }
 };
-const Offsets Neighbours;
+const Offsets Neighbors;
 
-// Calls visit(w) for the neighbours w of voxel (x, y, z) of an n[0] x n[1] x
-// n[2] grid, nearest first (the 6 face neighbours only with faceOnly) until
+// Calls visit(w) for the neighbors w of voxel (x, y, z) of an n[0] x n[1] x
+// n[2] grid, nearest first (the 6 face neighbors only with faceOnly) until
 // visit returns true.
 template <typename Visit>
-void ForEachNeighbour(const int n[3], int x, int y, int z, bool faceOnly, Visit&& visit)
+void ForEachNeighbor(const int n[3], int x, int y, int z, bool faceOnly, Visit&& visit)
 {
   for (int k = 0; k < (faceOnly ? 6 : 26); ++k)
   {
-    const int px = x + Neighbours.D[k][0], py = y + Neighbours.D[k][1], pz = z + Neighbours.D[k][2];
+    const int px = x + Neighbors.D[k][0], py = y + Neighbors.D[k][1], pz = z + Neighbors.D[k][2];
     if (px >= 0 && py >= 0 && pz >= 0 && px < n[0] && py < n[1] && pz < n[2] &&
       visit(px + static_cast<vtkIdType>(n[0]) * (py + static_cast<vtkIdType>(n[1]) * pz)))
     {
@@ -104,7 +104,7 @@ float vtkVoxelMargin::SmallestBorderDensity(int nx, int ny, int nz, const float*
           continue;
         }
         bool border = x == 0 || y == 0 || z == 0 || x == nx - 1 || y == ny - 1 || z == nz - 1;
-        ForEachNeighbour(n, x, y, z, true, [&](vtkIdType w) {
+        ForEachNeighbor(n, x, y, z, true, [&](vtkIdType w) {
           border = !IsActive(density[w]);
           return border;
         });
@@ -147,14 +147,14 @@ void vtkVoxelMargin::Extend(int nx, int ny, int nz, const float* density, int ma
 //------------------------------------------------------------------------------
 bool vtkVoxelMargin::Pull(vtkIdType v, int step)
 {
-  // The nearest neighbour that is active or became virtual in an earlier step
-  // (at a flat face: the face neighbour, so the margin continues the face).
+  // The nearest neighbor that is active or became virtual in an earlier step
+  // (at a flat face: the face neighbor, so the margin continues the face).
   const int* n = this->Extent;
   const int x = static_cast<int>(v % n[0]);
   const int y = static_cast<int>((v / n[0]) % n[1]);
   const int z = static_cast<int>(v / (static_cast<vtkIdType>(n[0]) * n[1]));
   bool found = false;
-  ForEachNeighbour(n, x, y, z, false, [&](vtkIdType w) {
+  ForEachNeighbor(n, x, y, z, false, [&](vtkIdType w) {
     const int from = this->Virtual[w];
     found = from == 0 ? IsActive(this->Density[w]) : from < step;
     if (found)
@@ -187,7 +187,7 @@ void vtkVoxelMargin::Grow(int depth)
       const int x = static_cast<int>(u % n[0]);
       const int y = static_cast<int>((u / n[0]) % n[1]);
       const int z = static_cast<int>(u / (static_cast<vtkIdType>(n[0]) * n[1]));
-      ForEachNeighbour(n, x, y, z, false, [&](vtkIdType w) {
+      ForEachNeighbor(n, x, y, z, false, [&](vtkIdType w) {
         if (this->Virtual[w] == 0 && !IsActive(this->Density[w]) && this->Pull(w, step))
         {
           next.push_back(w);

@@ -5,7 +5,7 @@
  * @brief   A density volume continued around its support, for point-set kernels.
  *
  * A point process is denser along the border of the region it samples than
- * inside: a sample there has no neighbours beyond the border to keep others
+ * inside: a sample there has no neighbors beyond the border to keep others
  * away. At the faces of a box (a maximal Poisson-disk set on a 64^3 cube at
  * g = 16/255 puts 1.5 times the mean count into its first layer) this shows
  * in the spectrum as power along the axes (mean anisotropy 1.5 to 4.7 dB
@@ -17,9 +17,9 @@
  * - the grid is extended by a margin of m voxels on every side (Extent =
  *   Dims + 2 m per axis, x fastest; outside voxels start empty);
  * - every voxel that is not active (outside, g <= 0 or NaN, g >= 1) within
- *   `depth` steps (26-neighbourhood, so Chebyshev distance) of an active voxel
+ *   `depth` steps (26-neighborhood, so Chebyshev distance) of an active voxel
  *   (0 < g < 1) becomes a virtual voxel. At step k it takes the density of its
- *   nearest neighbour (faces before edges before corners, then index order)
+ *   nearest neighbor (faces before edges before corners, then index order)
  *   that is active or became virtual before step k: the density of the
  *   support's border continues outwards, into the margin (at a flat face as
  *   the face's own column), the empty regions and the saturated ones.
@@ -34,7 +34,7 @@
  * the voxel grid, how densely a point process packs depends on g in steps
  * that the continuous formulas do not have).
  *
- * Cost: one pass over the extended grid that checks the 26 neighbours of each
+ * Cost: one pass over the extended grid that checks the 26 neighbors of each
  * voxel that is not active, then the breadth-first growth over the virtual
  * voxels. Memory: 5 bytes per extended voxel, 8 per voxel of a growth front.
  */
@@ -62,7 +62,7 @@ public:
   /**
    * The smallest active density of an nx x ny x nz volume on its faces, or on
    * the border of its support (active voxels on a face or next to a voxel that
-   * is not active, 6-neighbourhood); 1 if there is none.
+   * is not active, 6-neighborhood); 1 if there is none.
    */
   static float SmallestFaceDensity(int nx, int ny, int nz, const float* density);
   static float SmallestBorderDensity(int nx, int ny, int nz, const float* density);

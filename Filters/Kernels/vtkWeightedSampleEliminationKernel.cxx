@@ -258,7 +258,7 @@ void vtkWeightedSampleEliminationKernel::Eliminate()
 {
   // Virtual candidates go in weight order too; real ones go while their level
   // has more than its target, and are kept (they leave the heap but still
-  // weigh on their neighbours) once it has not.
+  // weigh on their neighbors) once it has not.
   while (this->Remaining > 0)
   {
     const int e = this->Heap[0].Candidate;

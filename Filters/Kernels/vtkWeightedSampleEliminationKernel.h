@@ -24,7 +24,7 @@
  *   deep (r below at the smallest density there; see vtkVoxelPointSetKernel
  *   for the limits). Their candidates are drawn, weigh and are eliminated like
  *   the others, but count for no target and are dropped at the end. Without
- *   it candidates near a face have fewer neighbours, keep lower weights and
+ *   it candidates near a face have fewer neighbors, keep lower weights and
  *   survive more often (the first layer holds 1.4 times its share at 32/255
  *   on 64^3, the mean anisotropy is 2 to 4.7 dB instead of 0, and the voxels
  *   within 1.5 voxels of a region of g = 0 get 1.33 times their expected
@@ -47,7 +47,7 @@
  *   number of real candidates (delta = 0 with
  *   SetWeightLimiting(false)). In constant density D = 2 r_max, the paper's
  *   weight. The smaller radius governs a pair so that every partner of i lies
- *   within 2 r_i: neighbourhoods are found from each candidate's own radius and
+ *   within 2 r_i: neighborhoods are found from each candidate's own radius and
  *   are symmetric without stored adjacency lists, and a sparse candidate does
  *   not weigh on a denser region beyond the denser region's own reach.
  * - Elimination: W_i = sum of w_ij over the other candidates. The candidate
@@ -59,7 +59,7 @@
  *   the levels in order of g, so the targets add up to T (a level with fewer
  *   candidates passes the difference to the next one). A candidate whose level
  *   has reached its target is kept instead of eliminated (it leaves the heap
- *   and still weighs on its neighbours); virtual candidates have no target.
+ *   and still weighs on its neighbors); virtual candidates have no target.
  *   It ends when every level is at its target, so the count is exact by
  *   construction. The levels make the density follow g: on the grid the
  *   final weights at which a density stops losing candidates depend on g in

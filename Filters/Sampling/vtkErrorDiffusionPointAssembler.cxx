@@ -97,7 +97,7 @@ void ReserveUninitialized(vtkAbstractArray* array, vtkIdType tuples)
 
 // Makes room for `tuples` tuples and sets the count; grows by at least half
 // (VTK's Resize of a numeric array more than doubles), so appending layers
-// costs amortised O(1) per tuple.
+// costs amortized O(1) per tuple.
 void EnsureTuples(vtkAbstractArray* array, vtkIdType tuples)
 {
   const int components = std::max(1, array->GetNumberOfComponents());

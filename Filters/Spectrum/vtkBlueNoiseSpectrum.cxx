@@ -182,14 +182,14 @@ void CheckShape(const int* dims, const int* first, std::size_t i, std::ostringst
 {
   if (i == 0 && (dims[0] < 2 || dims[1] < 2 || dims[2] < 2))
   {
-    error << "Cannot analyse the grid: grid dimensions " << dims[0] << " x " << dims[1] << " x "
+    error << "Cannot analyze the grid: grid dimensions " << dims[0] << " x " << dims[1] << " x "
           << dims[2] << " are invalid: every dimension must be at least 2.";
   }
   else if (!std::equal(dims, dims + 3, first))
   {
-    error << "Realisation " << i << " has a " << dims[0] << " x " << dims[1] << " x " << dims[2]
-          << " grid but realisation 0 has " << first[0] << " x " << first[1] << " x " << first[2]
-          << ": all realisations must share one grid shape.";
+    error << "Realization " << i << " has a " << dims[0] << " x " << dims[1] << " x " << dims[2]
+          << " grid but realization 0 has " << first[0] << " x " << first[1] << " x " << first[2]
+          << ": all realizations must share one grid shape.";
   }
 }
 
@@ -294,22 +294,22 @@ bool AddImageArray(vtkBlueNoiseSpectrumKernel& kernel, vtkDataArray* array, std:
 {
   if (auto bytes = vtkUnsignedCharArray::SafeDownCast(array))
   {
-    return kernel.AddRealisation(bytes->GetPointer(0), &error);
+    return kernel.AddRealization(bytes->GetPointer(0), &error);
   }
   if (auto floats = vtkFloatArray::SafeDownCast(array))
   {
-    return kernel.AddRealisation(floats->GetPointer(0), &error);
+    return kernel.AddRealization(floats->GetPointer(0), &error);
   }
   if (auto doubles = vtkDoubleArray::SafeDownCast(array))
   {
-    return kernel.AddRealisation(doubles->GetPointer(0), &error);
+    return kernel.AddRealization(doubles->GetPointer(0), &error);
   }
   std::vector<double> converted(static_cast<std::size_t>(array->GetNumberOfTuples()));
   for (std::size_t v = 0; v < converted.size(); ++v)
   {
     converted[v] = array->GetComponent(static_cast<vtkIdType>(v), 0);
   }
-  return kernel.AddRealisation(converted.data(), &error);
+  return kernel.AddRealization(converted.data(), &error);
 }
 
 // Gathered samples into the kernel: an image's values as a volume, points as
@@ -324,7 +324,7 @@ bool AddGathered(vtkBlueNoiseSpectrumKernel& kernel, SignalKind kind, std::size_
     {
       volume[samples.Voxels[s]] = samples.Values[s];
     }
-    return kernel.AddRealisation(volume.data(), &error);
+    return kernel.AddRealization(volume.data(), &error);
   }
   std::vector<float> weights(samples.Values.begin(), samples.Values.end());
   return kernel.AddSamples(samples.Voxels.data(), weights.empty() ? nullptr : weights.data(),
@@ -394,11 +394,11 @@ void FillTable(vtkTable* table, const vtkBlueNoiseSpectrumKernel::Result& result
   AddFieldValue(fd, "SymmetryCorrelation", result.SymmetryCorrelation);
   AddFieldValue(fd, "Symmetry", result.Symmetry);
   AddFieldValue(fd, "TargetValue", result.TargetValue);
-  vtkNew<vtkIntArray> realisationCount;
-  realisationCount->SetName("Realisations");
-  realisationCount->SetNumberOfValues(1);
-  realisationCount->SetValue(0, result.Realisations);
-  fd->AddArray(realisationCount);
+  vtkNew<vtkIntArray> realizationCount;
+  realizationCount->SetName("Realizations");
+  realizationCount->SetNumberOfValues(1);
+  realizationCount->SetValue(0, result.Realizations);
+  fd->AddArray(realizationCount);
   vtkNew<vtkIntArray> gridDimensions;
   gridDimensions->SetName("GridDimensions");
   gridDimensions->SetNumberOfComponents(3);
@@ -438,7 +438,7 @@ void SetSpectrumWholeExtent(vtkInformation* imageInfo, const int dims[3])
 
 bool FillSpectrumImage(vtkBlueNoiseSpectrumKernel& kernel, const int dims[3], vtkImageData* image)
 {
-  double* values = kernel.NewCentredPowerSpectrum();
+  double* values = kernel.NewCenteredPowerSpectrum();
   if (!values)
   {
     return false;
@@ -706,7 +706,7 @@ bool vtkBlueNoiseSpectrum::ValidateInputs(
       piece.Data = vtkDataSet::SafeDownCast(leaf.second);
       if (!vtkPointSet::SafeDownCast(leaf.second) && !vtkImageData::SafeDownCast(leaf.second))
       {
-        vtkErrorMacro("Realisation " << pieces.size() << " is a " << leaf.second->GetClassName()
+        vtkErrorMacro("Realization " << pieces.size() << " is a " << leaf.second->GetClassName()
                                      << ": only point sets and images are supported.");
         ok = false;
         break;
@@ -751,13 +751,13 @@ bool vtkBlueNoiseSpectrum::DescribePiece(Realization& piece, int index)
     if (d.NumberOfPoints > 0 &&
       !CheckImageArray(image, piece.Array, association, d.CellArray, error))
     {
-      vtkErrorMacro("Realisation " << index << ": " << error << ".");
+      vtkErrorMacro("Realization " << index << ": " << error << ".");
       return false;
     }
   }
   else if (this->UseInputGrid && !d.ReadSamplingGrid(piece.Data->GetFieldData(), error))
   {
-    vtkErrorMacro("Realisation " << index << ": " << error << ".");
+    vtkErrorMacro("Realization " << index << ": " << error << ".");
     return false;
   }
   return true;
@@ -799,7 +799,7 @@ bool vtkBlueNoiseSpectrum::CombinePieces(
     }
     else if (!realizations.back().Whole.Merge(piece, error))
     {
-      vtkErrorMacro("Realisation " << realizations.size() - 1 << ": " << error << ".");
+      vtkErrorMacro("Realization " << realizations.size() - 1 << ": " << error << ".");
       return false;
     }
   }
@@ -817,7 +817,7 @@ bool vtkBlueNoiseSpectrum::CombinePieces(
   }
   if (realizations.empty())
   {
-    vtkErrorMacro("The input has no realisation: connect point sets, images or composite "
+    vtkErrorMacro("The input has no realization: connect point sets, images or composite "
                   "datasets of those.");
     return false;
   }
@@ -838,7 +838,7 @@ bool vtkBlueNoiseSpectrum::BuildGrids(std::vector<Realization>& realizations)
     const Description& d = r.Whole;
     if (d.NumberOfPoints == 0)
     {
-      error << "Realisation " << i << " ("
+      error << "Realization " << i << " ("
             << (r.Data ? r.Data->GetClassName() : (d.IsImage ? "vtkImageData" : "vtkPointSet"))
             << ") has no points: the spectrum is undefined for N = 0.";
     }
@@ -898,7 +898,7 @@ int vtkBlueNoiseSpectrum::Accumulate(
     !this->IsRootProcess() || kernel.SetDimensions(dims[0], dims[1], dims[2], &error);
   if (!ready)
   {
-    vtkErrorMacro("Cannot analyse the grid: " << error << ".");
+    vtkErrorMacro("Cannot analyze the grid: " << error << ".");
   }
   if (!this->AllSucceeded(ready))
   {
@@ -959,7 +959,7 @@ bool vtkBlueNoiseSpectrum::AddRealization(
     }
     if (!ok)
     {
-      vtkErrorMacro("Realisation " << index << ": " << error << ".");
+      vtkErrorMacro("Realization " << index << ": " << error << ".");
     }
     if (!this->AllSucceeded(ok) ||
       !this->GatherSamples(samples.Voxels, samples.Values, samples.Counters))
@@ -975,7 +975,7 @@ bool vtkBlueNoiseSpectrum::AddRealization(
     {
       error += " (" + std::to_string(counters[0]) + " samples lie outside the analysis grid)";
     }
-    vtkErrorMacro("Realisation " << index << ": " << error << ".");
+    vtkErrorMacro("Realization " << index << ": " << error << ".");
   }
   this->NumberOfTransformedRealizations += (ok && this->IsRootProcess()) ? 1 : 0;
   // The root process may fail alone (N = 0 inside the grid): all stop together.

@@ -42,7 +42,7 @@
  * frequency f_g, NaN elsewhere (a chart marks f_g with it). Field data:
  * one-tuple vtkDoubleArrays `NumberOfPoints` (mean over realizations),
  * `Density`, `PrincipalFrequency`, `LowFrequencyRatio`, `SymmetryCorrelation`,
- * `Symmetry`, `TargetValue`, and vtkIntArrays `Realisations` (1 tuple) and
+ * `Symmetry`, `TargetValue`, and vtkIntArrays `Realizations` (1 tuple) and
  * `GridDimensions` (3 components).
  *
  * Output port 1, vtkImageData (when GenerateSpectrumImage is on): the averaged

@@ -9,7 +9,7 @@ Opens the volume, shows it as a volume with an opacity function that is 0
 below 40 % of the range, makes it the active source and runs the macro's
 setup. Checks that the macro added an ErrorDiffusionSampler on the volume
 with DensityMapping TransferFunction bound to the array's opacity function,
-a Point Gaussian representation coloured by the array with the same colour
+a Point Gaussian representation colored by the array with the same color
 function, not rescaled, radius h / sqrt(pi * DensityScale), about the
 requested number of particles, none where the opacity is 0, the particles
 shown jittered by less than half a voxel, and writes a screenshot. Prints MACRO CHECKS PASSED when every check passed.
@@ -71,7 +71,7 @@ def main():
     check(list(sampler.Scalars)[-1] == array, "Scalars = %s" % list(sampler.Scalars))
     check(rep.Representation == "Point Gaussian", "Point Gaussian representation (%s)" % rep.Representation)
     check(rep.LookupTable.SMProxy is lut.SMProxy and list(rep.ColorArrayName)[-1] == array,
-          "coloured by %s through its colour function" % array)
+          "colored by %s through its color function" % array)
     check(np.allclose(list(lut.RGBPoints), rgb_points) and np.allclose(list(otf.Points), otf_points),
           "the transfer functions were not rescaled")
     n = sampler.GetDataInformation().GetNumberOfPoints()

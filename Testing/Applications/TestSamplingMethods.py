@@ -13,7 +13,7 @@ mapping) at three DensityScales. Checks:
   different points, for both methods;
 - the methods differ as they should: hit-and-miss is unbiased over seeds
   (mean count within 3 standard errors of the expectation), and error
-  diffusion spreads its points evenly (mean nearest-neighbour distance larger
+  diffusion spreads its points evenly (mean nearest-neighbor distance larger
   than white noise's, fewer close pairs).
 Exits 1 when a check fails.
 """
@@ -43,7 +43,7 @@ def volume(n=48):
     return image, v.ravel()
 
 
-def nearest_neighbour_distances(pts):
+def nearest_neighbor_distances(pts):
     """Distance of every point to its nearest other point (vtkStaticPointLocator)."""
     data = vtkPolyData()
     vp = vtkPoints()
@@ -110,15 +110,15 @@ def main():
             other, _ = sample(image, method, scale, 8)
             check(not np.array_equal(pts, other), "%s: another Seed, other points" % what)
             if scale <= 0.2:
-                nn[method] = nearest_neighbour_distances(pts)
+                nn[method] = nearest_neighbor_distances(pts)
         if scale <= 0.2:
-            # Blue noise: larger nearest-neighbour distances, fewer close pairs.
+            # Blue noise: larger nearest-neighbor distances, fewer close pairs.
             close = {m: float(np.mean(nn[m] <= 1.5)) for m in nn}
             check(nn[ED].mean() > 1.1 * nn[WN].mean(),
-                  "scale %g: mean nearest-neighbour distance ED %.3f > 1.1 x WN %.3f"
+                  "scale %g: mean nearest-neighbor distance ED %.3f > 1.1 x WN %.3f"
                   % (scale, nn[ED].mean(), nn[WN].mean()))
             check(close[ED] < close[WN],
-                  "scale %g: fraction of points with a neighbour within 1.5 voxels ED %.3f < WN %.3f"
+                  "scale %g: fraction of points with a neighbor within 1.5 voxels ED %.3f < WN %.3f"
                   % (scale, close[ED], close[WN]))
 
     # Hit-and-miss is unbiased: the mean count over seeds.

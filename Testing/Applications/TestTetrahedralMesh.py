@@ -12,7 +12,7 @@ density from the value (ScalarRange mapping), about 1500 vertices, seeds 0, 1,
   carried value, no vertex twice;
 - the mesh is valid: only tetrahedra, positively oriented, none degenerate
   (volume at least the lattice minimum 1/6 voxel^3 that any non-flat
-  tetrahedron with voxel-centre vertices has, radius ratio finite and below
+  tetrahedron with voxel-center vertices has, radius ratio finite and below
   1000), none bridging empty space (no centroid in a voxel of density 0);
 - the vertex counts of both methods agree within 3 %;
 - the mean over seeds of the reconstruction RMSE (common region of both

@@ -35,7 +35,7 @@ namespace
 using Clock = std::chrono::steady_clock;
 
 // With --benchmark_repetitions, the fastest run: on a shared virtual machine
-// the other aggregates mostly measure the neighbours.
+// the other aggregates mostly measure the neighbors.
 double Fastest(const std::vector<double>& v)
 {
   return v.empty() ? 0.0 : *std::min_element(v.begin(), v.end());
@@ -57,7 +57,7 @@ struct Pcg32
 
 // The scan straight from the paper: layers along z, the serpentine of each
 // layer turned by 90 degrees per layer, the threshold 0.5 + s r m(g), the
-// error to the six neighbours of Table 1 (renormalized over those inside the
+// error to the six neighbors of Table 1 (renormalized over those inside the
 // volume), the binary volume b as output. Densities g = clamp(scale * value).
 template <typename T>
 vtkIdType PlainScan(const T* values, int n, double scale, unsigned char* b)

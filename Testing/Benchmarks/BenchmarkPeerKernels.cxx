@@ -21,7 +21,7 @@
 namespace
 {
 // With --benchmark_repetitions, the fastest run: on a shared virtual machine
-// the other aggregates mostly measure the neighbours.
+// the other aggregates mostly measure the neighbors.
 double Fastest(const std::vector<double>& v)
 {
   return v.empty() ? 0.0 : *std::min_element(v.begin(), v.end());

@@ -5,8 +5,8 @@
 // backend, whatever the default backend is).
 //   Fresh      a new kernel in every run: buffers allocated, committed and
 //              released (plans are cached for the process)
-//   Reused     Reset + AddRealisation + Compute on a kernel kept between runs
-//   Transform  AddRealisation alone (FFT and power), Compute the shell pass alone
+//   Reused     Reset + AddRealization + Compute on a kernel kept between runs
+//   Transform  AddRealization alone (FFT and power), Compute the shell pass alone
 //   Filter     vtkBlueNoiseSpectrum on the mask's points (sampler field data),
 //              without and with the spectrum image
 //   FFTW3D     FFTW's one-call 3D real-to-complex plan (FFTW_ESTIMATE) with as
@@ -136,7 +136,7 @@ void RunKernel(benchmark::State& state, Stage stage)
     {
       auto kernel = std::make_unique<vtkBlueNoiseSpectrumKernel>();
       kernel->SetDimensions(n, n, n);
-      kernel->AddRealisation(mask.data());
+      kernel->AddRealization(mask.data());
       vtkBlueNoiseSpectrumKernel::Result result;
       for (auto _ : state)
       {
@@ -148,7 +148,7 @@ void RunKernel(benchmark::State& state, Stage stage)
         if (stage != Stage::Compute)
         {
           kernel->Reset();
-          kernel->AddRealisation(mask.data());
+          kernel->AddRealization(mask.data());
         }
         if (stage != Stage::Transform)
         {

@@ -2,11 +2,11 @@
 // SPDX-License-Identifier: BSD-3-Clause
 // CheckMainJobPicture PNG [MIN_WIDTH MIN_HEIGHT]: exits non-zero unless PNG is
 // a readable RGB(A) picture of at least MIN_WIDTH x MIN_HEIGHT (default
-// 400 x 300) that is not blank: at least 16 distinct colours, at least 2% of
-// the pixels differing from the most frequent (background) colour, and at
-// least 0.5% of them clearly coloured (max - min of R, G, B >= 48; the
-// backgrounds and the text are white, grey or black, the points and the
-// curves are coloured by a colour map or in blue, orange and red).
+// 400 x 300) that is not blank: at least 16 distinct colors, at least 2% of
+// the pixels differing from the most frequent (background) color, and at
+// least 0.5% of them clearly colored (max - min of R, G, B >= 48; the
+// backgrounds and the text are white, gray or black, the points and the
+// curves are colored by a color map or in blue, orange and red).
 // Used by the MainJob test (RunMainJobTest.cmake) on samples.png and spectrum.png.
 #include "vtkDataArray.h"
 #include "vtkImageData.h"
@@ -56,7 +56,7 @@ int main(int argc, char* argv[])
   }
 
   std::unordered_map<std::uint32_t, long long> histogram;
-  long long coloured = 0;
+  long long colored = 0;
   const vtkIdType n = pixels->GetNumberOfTuples();
   for (vtkIdType i = 0; i < n; ++i)
   {
@@ -70,7 +70,7 @@ int main(int argc, char* argv[])
       hi = std::max(hi, v);
     }
     ++histogram[rgb];
-    coloured += hi - lo >= 48 ? 1 : 0;
+    colored += hi - lo >= 48 ? 1 : 0;
   }
   long long background = 0;
   for (const auto& entry : histogram)
@@ -78,9 +78,9 @@ int main(int argc, char* argv[])
     background = std::max(background, entry.second);
   }
   const double covered = 1.0 - static_cast<double>(background) / static_cast<double>(n);
-  const double saturated = static_cast<double>(coloured) / static_cast<double>(n);
-  std::printf("%s: %d x %d pixels, %zu colours, %.1f%% off the background colour, %.2f%% "
-              "coloured\n",
+  const double saturated = static_cast<double>(colored) / static_cast<double>(n);
+  std::printf("%s: %d x %d pixels, %zu colors, %.1f%% off the background color, %.2f%% "
+              "colored\n",
     path, dims[0], dims[1], histogram.size(), 100.0 * covered, 100.0 * saturated);
   if (histogram.size() < 16 || covered < 0.02 || saturated < 0.005)
   {

@@ -2,7 +2,7 @@
 // SPDX-License-Identifier: BSD-3-Clause
 // The kernel against a direct O(V^2) DFT over the full spectrum with two-pass
 // statistics, written from the definitions in vtkBlueNoiseSpectrumKernel.h:
-// every shell value, anisotropy, segmented curve, L, C, S, T and the centred
+// every shell value, anisotropy, segmented curve, L, C, S, T and the centered
 // spectrum to 1e-9, on cubic, non-cubic and odd grids, with and without
 // averaging.
 #include "TestBlueNoiseSpectrumUtilities.h"
@@ -39,9 +39,9 @@ double Pearson(const std::vector<double>& a, const std::vector<double>& b)
 }
 
 // The metric of `volumes` (each x fastest on `dims`), straight from the
-// definitions. `centred` receives the zero-centred averaged spectrum.
+// definitions. `centered` receives the zero-centered averaged spectrum.
 Result Reference(const std::vector<std::vector<double>>& volumes, const int dims[3], double w,
-  std::vector<double>& centred)
+  std::vector<double>& centered)
 {
   const int lx = dims[0], ly = dims[1], lz = dims[2];
   const std::size_t voxels = Voxels(dims);
@@ -89,7 +89,7 @@ Result Reference(const std::vector<std::vector<double>>& volumes, const int dims
   }
 
   Result r;
-  r.Realisations = static_cast<int>(volumes.size());
+  r.Realizations = static_cast<int>(volumes.size());
   r.NumberOfPoints = pointSum / volumes.size();
   r.Density = r.NumberOfPoints / voxels;
   const double g = r.Density;
@@ -182,7 +182,7 @@ Result Reference(const std::vector<std::vector<double>>& volumes, const int dims
   r.Symmetry = 1.0 - r.SymmetryCorrelation;
   r.TargetValue = w * r.LowFrequencyRatio + (1.0 - w) * r.Symmetry;
 
-  centred.assign(voxels, 0.0);
+  centered.assign(voxels, 0.0);
   std::size_t c = 0;
   for (int k3 = 0; k3 < lz; ++k3)
   {
@@ -194,17 +194,17 @@ Result Reference(const std::vector<std::vector<double>>& volumes, const int dims
         const int ky = (k2 - ly / 2 + ly) % ly;
         const int kz = (k3 - lz / 2 + lz) % lz;
         const std::size_t source = (static_cast<std::size_t>(kz) * ly + ky) * lx + kx;
-        centred[c] = source == 0 ? 0.0 : power[source];
+        centered[c] = source == 0 ? 0.0 : power[source];
       }
     }
   }
   return r;
 }
 
-void Compare(const int dims[3], int realisations, bool masks, double w, std::mt19937& rng)
+void Compare(const int dims[3], int realizations, bool masks, double w, std::mt19937& rng)
 {
   const std::string what = std::string(masks ? "masks" : "counts") + " on " + Str(dims[0]) + "x" +
-    Str(dims[1]) + "x" + Str(dims[2]) + " R=" + Str(realisations);
+    Str(dims[1]) + "x" + Str(dims[2]) + " R=" + Str(realizations);
   vtkBlueNoiseSpectrumKernel kernel;
   std::string error;
   if (!Check(kernel.SetDimensions(dims[0], dims[1], dims[2], &error), what + ": " + error))
@@ -213,21 +213,21 @@ void Compare(const int dims[3], int realisations, bool masks, double w, std::mt1
   }
   kernel.SetWeight(w);
   std::vector<std::vector<double>> volumes;
-  for (int i = 0; i < realisations; ++i)
+  for (int i = 0; i < realizations; ++i)
   {
     bool added = false;
     if (masks)
     {
       const std::vector<unsigned char> m = RandomMask(dims, 0.3, rng);
       volumes.emplace_back(m.begin(), m.end());
-      added = kernel.AddRealisation(m.data(), &error);
+      added = kernel.AddRealization(m.data(), &error);
     }
     else
     {
       const std::vector<double> counts = RandomCounts(dims, rng);
       const std::vector<float> single(counts.begin(), counts.end());
       volumes.emplace_back(single.begin(), single.end());
-      added = kernel.AddRealisation(single.data(), &error);
+      added = kernel.AddRealization(single.data(), &error);
     }
     if (!Check(added, what + ": " + error))
     {
@@ -237,7 +237,7 @@ void Compare(const int dims[3], int realisations, bool masks, double w, std::mt1
   Result r;
   std::vector<double> spectrum;
   if (!Check(kernel.Compute(r, &error), what + ": " + error) ||
-    !Check(kernel.GetCentredPowerSpectrum(spectrum), what + ": no centred spectrum"))
+    !Check(kernel.GetCenteredPowerSpectrum(spectrum), what + ": no centered spectrum"))
   {
     return;
   }
@@ -259,7 +259,7 @@ void Compare(const int dims[3], int realisations, bool masks, double w, std::mt1
     worst = std::max(worst,
       std::abs(spectrum[i] - expectedSpectrum[i]) / std::max(1.0, std::abs(expectedSpectrum[i])));
   }
-  Check(worst <= 1e-9, what + ": centred spectrum differs by " + Str(worst));
+  Check(worst <= 1e-9, what + ": centered spectrum differs by " + Str(worst));
 }
 }
 

@@ -71,38 +71,38 @@ void KernelErrors()
   std::string error;
   Result r;
   std::vector<unsigned char> zeros(8 * 8 * 8, 0);
-  Check(!kernel.AddRealisation(zeros.data(), &error) && error.find("not set") != std::string::npos,
-    "AddRealisation without dimensions: '" + error + "'");
+  Check(!kernel.AddRealization(zeros.data(), &error) && error.find("not set") != std::string::npos,
+    "AddRealization without dimensions: '" + error + "'");
   Check(!kernel.SetDimensions(1, 8, 8, &error) && error.find("at least 2") != std::string::npos,
     "SetDimensions(1, 8, 8): '" + error + "'");
   Check(kernel.SetDimensions(8, 8, 8, &error), "SetDimensions(8, 8, 8): " + error);
-  Check(!kernel.Compute(r, &error) && error.find("no realisation") != std::string::npos,
-    "Compute without realisations: '" + error + "'");
-  Check(!kernel.AddRealisation(zeros.data(), &error) && error.find("N = 0") != std::string::npos,
+  Check(!kernel.Compute(r, &error) && error.find("no realization") != std::string::npos,
+    "Compute without realizations: '" + error + "'");
+  Check(!kernel.AddRealization(zeros.data(), &error) && error.find("N = 0") != std::string::npos,
     "empty mask: '" + error + "'");
 
-  // A good realisation, then bad ones that must not change the result.
+  // A good realization, then bad ones that must not change the result.
   std::vector<float> counts(8 * 8 * 8, 0.0f);
   counts[3] = 1.0f;
   counts[100] = 2.5f;
-  Check(kernel.AddRealisation(counts.data(), &error), "good counts: " + error);
+  Check(kernel.AddRealization(counts.data(), &error), "good counts: " + error);
   Result before;
   kernel.Compute(before);
   std::vector<float> bad = counts;
   bad[17] = -1.0f;
-  Check(!kernel.AddRealisation(bad.data(), &error) &&
+  Check(!kernel.AddRealization(bad.data(), &error) &&
       error.find("finite and non-negative") != std::string::npos,
     "negative count: '" + error + "'");
   bad[17] = std::numeric_limits<float>::quiet_NaN();
-  Check(!kernel.AddRealisation(bad.data(), &error) && error.find("(1, 2, 0)") != std::string::npos,
+  Check(!kernel.AddRealization(bad.data(), &error) && error.find("(1, 2, 0)") != std::string::npos,
     "NaN count names its voxel: '" + error + "'");
   bad[17] = std::numeric_limits<float>::infinity();
-  Check(!kernel.AddRealisation(bad.data(), &error), "infinite count accepted");
-  Check(kernel.GetNumberOfRealisations() == 1,
-    "rejected realisations were counted: " + Str(kernel.GetNumberOfRealisations()));
+  Check(!kernel.AddRealization(bad.data(), &error), "infinite count accepted");
+  Check(kernel.GetNumberOfRealizations() == 1,
+    "rejected realizations were counted: " + Str(kernel.GetNumberOfRealizations()));
   Result after;
   kernel.Compute(after);
-  CheckSameResult(after, before, 0.0, "after rejected realisations");
+  CheckSameResult(after, before, 0.0, "after rejected realizations");
 
   kernel.SetWeight(2.0);
   Check(kernel.GetWeight() == 1.0, "weight not clamped to 1: " + Str(kernel.GetWeight()));
@@ -111,8 +111,8 @@ void KernelErrors()
 
   // Reset keeps the shape.
   kernel.Reset();
-  Check(kernel.GetNumberOfRealisations() == 0, "Reset kept realisations");
-  Check(kernel.AddRealisation(counts.data(), &error), "after Reset: " + error);
+  Check(kernel.GetNumberOfRealizations() == 0, "Reset kept realizations");
+  Check(kernel.AddRealization(counts.data(), &error), "after Reset: " + error);
 }
 
 void FullMask(std::mt19937& rng)
@@ -140,18 +140,18 @@ void FullMask(std::mt19937& rng)
         Str(r.Anisotropy[i]) + " (" + Str(r.AnisotropyDB[i]) + " dB)");
   }
 
-  // A constant realisation contributes exactly zero to the average.
+  // A constant realization contributes exactly zero to the average.
   vtkBlueNoiseSpectrumKernel kernel;
   kernel.SetDimensions(16, 16, 16);
   const std::vector<unsigned char> noise = RandomMask(dims, 0.2, rng);
   const std::vector<float> threes(Voxels(dims), 3.0f);
-  kernel.AddRealisation(noise.data());
+  kernel.AddRealization(noise.data());
   Result single;
   kernel.Compute(single);
-  kernel.AddRealisation(threes.data());
+  kernel.AddRealization(threes.data());
   Result mixed;
   kernel.Compute(mixed);
-  Check(mixed.Warning.empty(), "mixed realisations: unexpected warning");
+  Check(mixed.Warning.empty(), "mixed realizations: unexpected warning");
   for (std::size_t i = 0; i < mixed.RadialPower.size(); ++i)
   {
     CheckClose(mixed.RadialPower[i], single.RadialPower[i] / 2, 1e-14,
@@ -195,7 +195,7 @@ void FilterErrors()
   ExpectFilterError(empty, "has no points", "empty poly data");
 
   vtkNew<vtkMultiBlockDataSet> noBlocks;
-  ExpectFilterError(noBlocks, "has no realisation", "empty multiblock");
+  ExpectFilterError(noBlocks, "has no realization", "empty multiblock");
 
   const int dims[3] = { 8, 8, 8 };
   vtkNew<vtkFloatArray> withNaN;
@@ -221,7 +221,7 @@ void FilterErrors()
   noArray->SetDimensions(4, 4, 4);
   ExpectFilterError(noArray, "no input array", "image without scalars");
 
-  // Two realisations of different shapes.
+  // Two realizations of different shapes.
   vtkNew<vtkUnsignedCharArray> small;
   small->SetNumberOfValues(512);
   small->FillValue(0);
@@ -234,7 +234,7 @@ void FilterErrors()
   vtkNew<vtkMultiBlockDataSet> mismatched;
   mismatched->SetBlock(0, MaskImage(dims, small));
   mismatched->SetBlock(1, MaskImage(other, smaller));
-  ExpectFilterError(mismatched, "share one grid shape", "mismatched realisations");
+  ExpectFilterError(mismatched, "share one grid shape", "mismatched realizations");
 
   // Malformed sampler field data.
   vtkNew<vtkPolyData> malformed;

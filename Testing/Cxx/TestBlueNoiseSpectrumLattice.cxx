@@ -2,7 +2,7 @@
 // SPDX-License-Identifier: BSD-3-Clause
 // A regular lattice of spacing s puts all its energy on the reciprocal lattice
 // (frequencies that are multiples of 1/s on every axis), P = N there, and none
-// anywhere else. Checked on the centred spectrum and on the shell sums.
+// anywhere else. Checked on the centered spectrum and on the shell sums.
 #include "TestBlueNoiseSpectrumUtilities.h"
 
 #include <cmath>
@@ -35,9 +35,9 @@ void CheckLattice(const int dims[3], int s, const int offset[3])
   Result r;
   std::vector<double> spectrum;
   if (!Check(kernel.SetDimensions(dims[0], dims[1], dims[2], &error), what + ": " + error) ||
-    !Check(kernel.AddRealisation(mask.data(), &error), what + ": " + error) ||
+    !Check(kernel.AddRealization(mask.data(), &error), what + ": " + error) ||
     !Check(kernel.Compute(r, &error), what + ": " + error) ||
-    !Check(kernel.GetCentredPowerSpectrum(spectrum), what + ": no centred spectrum"))
+    !Check(kernel.GetCenteredPowerSpectrum(spectrum), what + ": no centered spectrum"))
   {
     return;
   }

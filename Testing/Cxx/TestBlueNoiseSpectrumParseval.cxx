@@ -1,9 +1,9 @@
 // SPDX-FileCopyrightText: Copyright (c) 2025-2026 the BlueNoiseSampling contributors
 // SPDX-License-Identifier: BSD-3-Clause
 // Parseval: sum over all f of |B(f)|^2 = V sum b^2, so the non-DC power is
-// sum_{f != 0} P(f) = (V sum b^2 - N^2) / N. Checked on the centred spectrum
+// sum_{f != 0} P(f) = (V sum b^2 - N^2) / N. Checked on the centered spectrum
 // image and on the shell sums (RadialPower * ShellCount), for masks and
-// non-integer counts, even and odd dimensions, and an average of realisations.
+// non-integer counts, even and odd dimensions, and an average of realizations.
 #include "TestBlueNoiseSpectrumUtilities.h"
 
 using namespace spectrum_test;
@@ -21,10 +21,10 @@ double NonDCPower(const std::vector<double>& b)
   return (b.size() * squares - n * n) / n;
 }
 
-void CheckParseval(const int dims[3], bool mask, int realisations, std::mt19937& rng)
+void CheckParseval(const int dims[3], bool mask, int realizations, std::mt19937& rng)
 {
   const std::string what = std::string(mask ? "mask" : "counts") + " on " + Str(dims[0]) + "x" +
-    Str(dims[1]) + "x" + Str(dims[2]) + " R=" + Str(realisations);
+    Str(dims[1]) + "x" + Str(dims[2]) + " R=" + Str(realizations);
   vtkBlueNoiseSpectrumKernel kernel;
   std::string error;
   if (!Check(kernel.SetDimensions(dims[0], dims[1], dims[2], &error), what + ": " + error))
@@ -32,7 +32,7 @@ void CheckParseval(const int dims[3], bool mask, int realisations, std::mt19937&
     return;
   }
   double expected = 0.0;
-  for (int i = 0; i < realisations; ++i)
+  for (int i = 0; i < realizations; ++i)
   {
     bool added = false;
     std::vector<double> b;
@@ -40,24 +40,24 @@ void CheckParseval(const int dims[3], bool mask, int realisations, std::mt19937&
     {
       const std::vector<unsigned char> m = RandomMask(dims, 0.2, rng);
       b.assign(m.begin(), m.end());
-      added = kernel.AddRealisation(m.data(), &error);
+      added = kernel.AddRealization(m.data(), &error);
     }
     else
     {
       b = RandomCounts(dims, rng);
-      added = kernel.AddRealisation(b.data(), &error);
+      added = kernel.AddRealization(b.data(), &error);
     }
     if (!Check(added, what + ": " + error))
     {
       return;
     }
-    expected += NonDCPower(b) / realisations;
+    expected += NonDCPower(b) / realizations;
   }
 
   Result r;
   std::vector<double> spectrum;
   if (!Check(kernel.Compute(r, &error), what + ": " + error) ||
-    !Check(kernel.GetCentredPowerSpectrum(spectrum), what + ": no centred spectrum"))
+    !Check(kernel.GetCenteredPowerSpectrum(spectrum), what + ": no centered spectrum"))
   {
     return;
   }

@@ -1,8 +1,8 @@
 // SPDX-FileCopyrightText: Copyright (c) 2025-2026 the BlueNoiseSampling contributors
 // SPDX-License-Identifier: BSD-3-Clause
-// The filter against the kernel: points at voxel centres with the sampler's
+// The filter against the kernel: points at voxel centers with the sampler's
 // grid field data (rotated, offset extent), an image mask (uint8, a converted
-// integer type, cell data), averaged realisations (two connections, a
+// integer type, cell data), averaged realizations (two connections, a
 // multiblock), a grid built over the bounds, the spectrum image's geometry and
 // the outside-points warning.
 #include "TestBlueNoiseSpectrumUtilities.h"
@@ -37,7 +37,7 @@ const double Spacing[3] = { 0.5, 0.25, 1.0 };
 // 90 degrees about z, row major, index to physical.
 const double Direction[9] = { 0, -1, 0, 1, 0, 0, 0, 0, 1 };
 
-// The set voxels of `mask` as points at voxel centres, with the sampler's grid.
+// The set voxels of `mask` as points at voxel centers, with the sampler's grid.
 vtkSmartPointer<vtkPolyData> SamplerPoints(const std::vector<unsigned char>& mask)
 {
   auto data = MaskPoints(mask, Dims,
@@ -95,13 +95,13 @@ Result KernelResult(const std::vector<std::vector<unsigned char>>& masks, const 
   kernel.SetDimensions(dims[0], dims[1], dims[2]);
   for (const auto& mask : masks)
   {
-    kernel.AddRealisation(mask.data());
+    kernel.AddRealization(mask.data());
   }
   Result r;
   kernel.Compute(r);
   if (spectrum)
   {
-    kernel.GetCentredPowerSpectrum(*spectrum);
+    kernel.GetCenteredPowerSpectrum(*spectrum);
   }
   return r;
 }
@@ -134,12 +134,12 @@ bool CheckImageGeometry(vtkImageData* image, const int dims[3], const std::strin
   {
     CheckClose(image->GetSpacing()[a], 1.0 / dims[a], 1e-15, what + " spacing");
   }
-  double centre[3];
+  double center[3];
   int c[3] = { dims[0] / 2, dims[1] / 2, dims[2] / 2 };
-  image->GetPoint(image->ComputePointId(c), centre);
-  return Check(std::abs(centre[0]) + std::abs(centre[1]) + std::abs(centre[2]) < 1e-15,
-    what + ": index floor(L/2) is at " + Str(centre[0]) + " " + Str(centre[1]) + " " +
-      Str(centre[2]) + ", not at frequency 0");
+  image->GetPoint(image->ComputePointId(c), center);
+  return Check(std::abs(center[0]) + std::abs(center[1]) + std::abs(center[2]) < 1e-15,
+    what + ": index floor(L/2) is at " + Str(center[0]) + " " + Str(center[1]) + " " +
+      Str(center[2]) + ", not at frequency 0");
 }
 
 void CheckImage(vtkImageData* image, const int dims[3], const std::vector<double>& spectrum,
@@ -161,7 +161,7 @@ void CheckImage(vtkImageData* image, const int dims[3], const std::vector<double
   {
     same = same && Close(power->GetComponent(static_cast<vtkIdType>(i), 0), spectrum[i], 1e-12);
   }
-  Check(same, what + ": Power differs from the kernel's centred spectrum");
+  Check(same, what + ": Power differs from the kernel's centered spectrum");
   Check(power->GetComponent(image->ComputePointId(c), 0) == 0.0, what + ": DC is not 0");
 }
 }
@@ -226,7 +226,7 @@ int main()
     CheckFilter(filter, single, "cell-data image");
   }
 
-  // Images with UseInputGrid off: their point (or cell-centre) positions,
+  // Images with UseInputGrid off: their point (or cell-center) positions,
   // weighted by the values, binned to GridDimensions over the bounds.
   {
     const double identity[9] = { 1, 0, 0, 0, 1, 0, 0, 0, 1 };
@@ -241,20 +241,20 @@ int main()
     cells->SetInputArrayToProcess(0, 0, 0, vtkDataObject::FIELD_ASSOCIATION_CELLS, "cellmask");
     cells->UseInputGridOff();
     cells->SetGridDimensions(Dims[0], Dims[1], Dims[2]);
-    // The cell centres' lattice, moved a quarter voxel so that a point half a
-    // voxel off its centre would not tie.
-    double centres[6];
+    // The cell centers' lattice, moved a quarter voxel so that a point half a
+    // voxel off its center would not tie.
+    double centers[6];
     for (int a = 0; a < 3; ++a)
     {
-      centres[2 * a] = Origin[a] + (Lower[a] + 0.75) * Spacing[a];
-      centres[2 * a + 1] = Origin[a] + (Lower[a] + Dims[a] - 0.25) * Spacing[a];
+      centers[2 * a] = Origin[a] + (Lower[a] + 0.75) * Spacing[a];
+      centers[2 * a + 1] = Origin[a] + (Lower[a] + Dims[a] - 0.25) * Spacing[a];
     }
-    cells->SetGridBounds(centres);
+    cells->SetGridBounds(centers);
     cells->UseGridBoundsOn();
-    CheckFilter(cells, single, "image cell centres over GridBounds");
+    CheckFilter(cells, single, "image cell centers over GridBounds");
   }
 
-  // Two realisations: two connections, and a multiblock of two.
+  // Two realizations: two connections, and a multiblock of two.
   const Result averaged = KernelResult({ mask, second }, Dims);
   {
     vtkNew<vtkBlueNoiseSpectrum> filter;

@@ -22,7 +22,7 @@ void CheckSinglePoint(const int dims[3], const int point[3])
   vtkBlueNoiseSpectrumKernel kernel;
   std::string error;
   if (!Check(kernel.SetDimensions(dims[0], dims[1], dims[2], &error), what + ": " + error) ||
-    !Check(kernel.AddRealisation(mask.data(), &error), what + ": " + error))
+    !Check(kernel.AddRealization(mask.data(), &error), what + ": " + error))
   {
     return;
   }
@@ -81,16 +81,16 @@ void CheckSinglePoint(const int dims[3], const int point[3])
   CheckClose(r.TargetValue, 0.02 * r.LowFrequencyRatio + 0.98 * r.Symmetry, 1e-15, what + " T");
 
   std::vector<double> spectrum;
-  if (Check(kernel.GetCentredPowerSpectrum(spectrum), what + ": no centred spectrum"))
+  if (Check(kernel.GetCenteredPowerSpectrum(spectrum), what + ": no centered spectrum"))
   {
-    const std::size_t centre =
+    const std::size_t center =
       (static_cast<std::size_t>(dims[2] / 2) * dims[1] + dims[1] / 2) * dims[0] + dims[0] / 2;
     double worst = 0.0;
     for (std::size_t i = 0; i < spectrum.size(); ++i)
     {
-      worst = std::max(worst, std::abs(spectrum[i] - (i == centre ? 0.0 : 1.0)));
+      worst = std::max(worst, std::abs(spectrum[i] - (i == center ? 0.0 : 1.0)));
     }
-    Check(worst <= 1e-9, what + ": centred spectrum deviates from 1 by " + Str(worst));
+    Check(worst <= 1e-9, what + ": centered spectrum deviates from 1 by " + Str(worst));
   }
 
   // The one-call path gives the same numbers.

@@ -54,7 +54,7 @@ Run Evaluate(const int dims[3], int threads, AddAll addAll)
     {
       vtkBlueNoiseSpectrumKernel kernel;
       run.Ok = kernel.SetDimensions(dims[0], dims[1], dims[2]) && addAll(kernel) &&
-        kernel.Compute(run.Metrics) && kernel.GetCentredPowerSpectrum(run.Spectrum);
+        kernel.Compute(run.Metrics) && kernel.GetCenteredPowerSpectrum(run.Spectrum);
     });
   return run;
 }
@@ -67,7 +67,7 @@ void CheckSameRun(const Run& a, const Run& b, const std::string& what)
   }
   CheckSameResult(a.Metrics, b.Metrics, 0.0, what);
   Check(a.Metrics.AnisotropyDB == b.Metrics.AnisotropyDB, what + ": AnisotropyDB differs");
-  Check(a.Spectrum == b.Spectrum, what + ": the centred power spectrum differs");
+  Check(a.Spectrum == b.Spectrum, what + ": the centered power spectrum differs");
 }
 }
 
@@ -95,16 +95,16 @@ int main()
     }
 
     const auto oneMask = [&](vtkBlueNoiseSpectrumKernel& k)
-    { return k.AddRealisation(first.data()); };
+    { return k.AddRealization(first.data()); };
     const auto twoMasks = [&](vtkBlueNoiseSpectrumKernel& k)
-    { return k.AddRealisation(first.data()) && k.AddRealisation(second.data()); };
+    { return k.AddRealization(first.data()) && k.AddRealization(second.data()); };
     const auto samples = [&](vtkBlueNoiseSpectrumKernel& k)
     {
       return k.AddSamples(voxels.data(), weights.data(), voxels.size()) &&
-        k.AddRealisation(second.data());
+        k.AddRealization(second.data());
     };
     const auto floats = [&](vtkBlueNoiseSpectrumKernel& k)
-    { return k.AddRealisation(volume.data()) && k.AddRealisation(second.data()); };
+    { return k.AddRealization(volume.data()) && k.AddRealization(second.data()); };
     const Run one = Evaluate(dims, 1, oneMask);
     const Run two = Evaluate(dims, 1, twoMasks);
     const Run sampled = Evaluate(dims, 1, samples);
@@ -117,7 +117,7 @@ int main()
     }
     CheckSameRun(Evaluate(dims, 2, floats), sampled, shape + ": samples against their volume");
     Check(one.Metrics.RadialPower != two.Metrics.RadialPower,
-      shape + ": one and two realisations agree, the comparison would not see a difference");
+      shape + ": one and two realizations agree, the comparison would not see a difference");
   }
   return bluenoise_test::Summary("TestBlueNoiseSpectrumThreadCount");
 }

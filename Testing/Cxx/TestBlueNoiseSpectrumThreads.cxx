@@ -39,12 +39,12 @@ int main()
     {
       if (i % 3 == 0)
       {
-        // A kernel of its own, two realisations (the mask and its shift).
+        // A kernel of its own, two realizations (the mask and its shift).
         vtkBlueNoiseSpectrumKernel kernel;
         std::vector<unsigned char> shifted(jobs[i].Mask.begin() + 1, jobs[i].Mask.end());
         shifted.push_back(jobs[i].Mask.front());
         jobs[i].Ok = kernel.SetDimensions(jobs[i].Dims[0], jobs[i].Dims[1], jobs[i].Dims[2]) &&
-          kernel.AddRealisation(jobs[i].Mask.data()) && kernel.AddRealisation(shifted.data()) &&
+          kernel.AddRealization(jobs[i].Mask.data()) && kernel.AddRealization(shifted.data()) &&
           kernel.Compute(jobs[i].Concurrent);
       }
       else
@@ -67,12 +67,12 @@ int main()
     }
     vtkBlueNoiseSpectrumKernel kernel;
     kernel.SetDimensions(jobs[i].Dims[0], jobs[i].Dims[1], jobs[i].Dims[2]);
-    kernel.AddRealisation(jobs[i].Mask.data());
+    kernel.AddRealization(jobs[i].Mask.data());
     if (i % 3 == 0)
     {
       std::vector<unsigned char> shifted(jobs[i].Mask.begin() + 1, jobs[i].Mask.end());
       shifted.push_back(jobs[i].Mask.front());
-      kernel.AddRealisation(shifted.data());
+      kernel.AddRealization(shifted.data());
     }
     Result sequential;
     kernel.Compute(sequential);

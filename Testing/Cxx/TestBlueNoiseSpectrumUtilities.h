@@ -183,7 +183,7 @@ inline bool ResultFromTable(vtkTable* table, Result& r)
     return true;
   };
   std::vector<double> counts;
-  double realisations = 0.0;
+  double realizations = 0.0;
   const bool ok = column("Frequency", r.Frequency) && column("RadialPower", r.RadialPower) &&
     column("Anisotropy", r.Anisotropy) && column("AnisotropyDB", r.AnisotropyDB) &&
     column("SRAPS_XY", r.SrapsXY) && column("SRAPS_XZ", r.SrapsXZ) &&
@@ -192,9 +192,9 @@ inline bool ResultFromTable(vtkTable* table, Result& r)
     field("PrincipalFrequency", r.PrincipalFrequency) &&
     field("LowFrequencyRatio", r.LowFrequencyRatio) &&
     field("SymmetryCorrelation", r.SymmetryCorrelation) && field("Symmetry", r.Symmetry) &&
-    field("TargetValue", r.TargetValue) && field("Realisations", realisations);
+    field("TargetValue", r.TargetValue) && field("Realizations", realizations);
   r.ShellCount.assign(counts.begin(), counts.end());
-  r.Realisations = static_cast<int>(realisations);
+  r.Realizations = static_cast<int>(realizations);
   return ok;
 }
 
@@ -226,8 +226,8 @@ inline void CheckSameResult(const Result& a, const Result& b, double rel, const 
   CheckClose(a.SymmetryCorrelation, b.SymmetryCorrelation, rel, what + " SymmetryCorrelation");
   CheckClose(a.Symmetry, b.Symmetry, rel, what + " Symmetry");
   CheckClose(a.TargetValue, b.TargetValue, rel, what + " TargetValue");
-  Check(a.Realisations == b.Realisations,
-    what + " Realisations " + Str(a.Realisations) + " vs " + Str(b.Realisations));
+  Check(a.Realizations == b.Realizations,
+    what + " Realizations " + Str(a.Realizations) + " vs " + Str(b.Realizations));
 }
 }
 

@@ -2,7 +2,7 @@
 // SPDX-License-Identifier: BSD-3-Clause
 // White noise (Bernoulli g per voxel) on 64^3: flat mean power 1 - g, an
 // isotropic spectrum whose shell variance is the exponential law's (anisotropy
-// 1, 0 dB, for one realisation; 1/R for R averaged realisations) and a
+// 1, 0 dB, for one realization; 1/R for R averaged realizations) and a
 // low-frequency ratio equal to the share of the spectrum inside |f| < f_g.
 #include "TestBlueNoiseSpectrumUtilities.h"
 
@@ -35,21 +35,21 @@ double BallInCube(double radius)
   return volume;
 }
 
-void CheckWhiteNoise(double g, int realisations, std::mt19937& rng)
+void CheckWhiteNoise(double g, int realizations, std::mt19937& rng)
 {
   const int n = 64;
   const int dims[3] = { n, n, n };
-  const std::string what = "white noise g=" + Str(g) + " R=" + Str(realisations);
+  const std::string what = "white noise g=" + Str(g) + " R=" + Str(realizations);
   vtkBlueNoiseSpectrumKernel kernel;
   std::string error;
   if (!Check(kernel.SetDimensions(n, n, n, &error), what + ": " + error))
   {
     return;
   }
-  for (int i = 0; i < realisations; ++i)
+  for (int i = 0; i < realizations; ++i)
   {
     const std::vector<unsigned char> mask = RandomMask(dims, g, rng);
-    if (!Check(kernel.AddRealisation(mask.data(), &error), what + ": " + error))
+    if (!Check(kernel.AddRealization(mask.data(), &error), what + ": " + error))
     {
       return;
     }
@@ -60,7 +60,7 @@ void CheckWhiteNoise(double g, int realisations, std::mt19937& rng)
     return;
   }
   CheckFinite(r, what);
-  Check(r.Realisations == realisations, what + ": " + Str(r.Realisations) + " realisations");
+  Check(r.Realizations == realizations, what + ": " + Str(r.Realizations) + " realizations");
   Check(std::abs(r.Density - g) < 0.01 * g, what + ": density " + Str(r.Density));
   Check(TotalCount(r) == n * n * n - 1, what + ": shell counts add up to " + Str(TotalCount(r)));
   Check(r.RadialPower.size() == static_cast<std::size_t>(std::lround(std::sqrt(3.0) * n / 2)),
@@ -79,7 +79,7 @@ void CheckWhiteNoise(double g, int realisations, std::mt19937& rng)
     {
       continue;
     }
-    const double sigma = 1.0 / std::sqrt(realisations * r.ShellCount[i] / 2.0);
+    const double sigma = 1.0 / std::sqrt(realizations * r.ShellCount[i] / 2.0);
     const double tolerance = std::max(0.05, 4.0 * sigma);
     Check(std::abs(r.RadialPower[i] / expected - 1.0) <= tolerance,
       what + " shell " + Str(shell) + ": power " + Str(r.RadialPower[i]) + ", expected " +
@@ -99,7 +99,7 @@ void CheckWhiteNoise(double g, int realisations, std::mt19937& rng)
     ++shells;
   }
   meanDB /= shells;
-  const double expectedDB = -10.0 * std::log10(static_cast<double>(realisations));
+  const double expectedDB = -10.0 * std::log10(static_cast<double>(realizations));
   Check(std::abs(meanDB - expectedDB) < 0.5,
     what + ": mean anisotropy " + Str(meanDB) + " dB, expected " + Str(expectedDB) + " dB");
 

@@ -1,7 +1,7 @@
 // SPDX-FileCopyrightText: Copyright (c) 2025-2026 the BlueNoiseSampling contributors
 // SPDX-License-Identifier: BSD-3-Clause
-// The parameter optimiser on a tiny grid with a tiny budget lowers T(g) from
-// its start point, returns normalised coefficients, and its figures agree with
+// The parameter optimizer on a tiny grid with a tiny budget lowers T(g) from
+// its start point, returns normalized coefficients, and its figures agree with
 // Evaluate() on the same settings (one metric implementation).
 #include "BlueNoiseTestUtilities.h"
 #include "vtkErrorDiffusionOptimizer.h"
@@ -21,10 +21,10 @@ int main()
   int calls = 0;
   const auto r = vtkErrorDiffusionOptimizer::OptimizeLevel(
     16, start, settings, [&calls](int, double) { ++calls; });
-  std::cout << "T(16/255): start " << r.StartMetrics.Target << ", optimised "
+  std::cout << "T(16/255): start " << r.StartMetrics.Target << ", optimized "
             << r.OptimizedMetrics.Target << " after " << r.Evaluations << " evaluations"
             << std::endl;
-  Check(r.Evaluations > 0 && r.Evaluations <= settings.MaximumEvaluations + 8, "budget honoured");
+  Check(r.Evaluations > 0 && r.Evaluations <= settings.MaximumEvaluations + 8, "budget honored");
   Check(calls > 0, "progress reported");
   Check(r.OptimizedMetrics.Target < r.StartMetrics.Target, "T lowered from the start point");
   double sum = 0.0;
@@ -33,17 +33,17 @@ int main()
     sum += a;
     Check(a >= 0.0, "coefficients non-negative");
   }
-  Check(std::abs(sum - 1.0) < 1e-9, "coefficients normalised");
+  Check(std::abs(sum - 1.0) < 1e-9, "coefficients normalized");
   Check(r.OptimizedMetrics.Points > 0.9 * 16.0 / 255.0 * 24 * 24 * 24, "sample count sane");
 
-  // Evaluate() with the optimised key gives the same T.
+  // Evaluate() with the optimized key gives the same T.
   vtkErrorDiffusionOptimizer::Evaluation e;
   std::string error;
   Check(vtkErrorDiffusionOptimizer::Evaluate(
           vtkErrorDiffusionOptimizer::SingleKeyTable(r.Optimized, 16), 16, settings, e, true, &error),
     "Evaluate: " + error);
   Check(std::abs(e.Whole.Target - r.OptimizedMetrics.Target) < 1e-12,
-    "Evaluate agrees with the optimiser");
+    "Evaluate agrees with the optimizer");
   Check(e.Interior.Points > 0 && e.Interior.Points < e.Whole.Points, "interior figures computed");
   // Bad settings are refused.
   settings.GridSize = 2;

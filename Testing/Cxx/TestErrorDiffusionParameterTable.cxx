@@ -71,7 +71,7 @@ int main()
     }
     Check(Near(sum, 1.0), "weights sum to 1");
   }
-  // Halfway between keys 8 and 16: the mean of the normalised parameters.
+  // Halfway between keys 8 and 16: the mean of the normalized parameters.
   {
     const auto a = paper.Evaluate(8.0 / 255.0);
     const auto b = paper.Evaluate(16.0 / 255.0);

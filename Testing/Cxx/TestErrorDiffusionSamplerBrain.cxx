@@ -1,7 +1,7 @@
 // SPDX-FileCopyrightText: Copyright (c) 2025-2026 the BlueNoiseSampling contributors
 // SPDX-License-Identifier: BSD-3-Clause
 // A real volume: the MRI brain ch2bet.nii.gz of Debian's mricron-data, read
-// with vtkNIFTIImageReader and normalised by its range. Points fall inside the
+// with vtkNIFTIImageReader and normalized by its range. Points fall inside the
 // brain (non-zero voxels), and brighter tissue gets more points per voxel.
 #include "MriTestUtilities.h"
 #include "SamplerTestUtilities.h"

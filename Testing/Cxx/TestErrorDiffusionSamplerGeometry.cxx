@@ -1,7 +1,7 @@
 // SPDX-FileCopyrightText: Copyright (c) 2025-2026 the BlueNoiseSampling contributors
 // SPDX-License-Identifier: BSD-3-Clause
 // World coordinates: with a non-trivial origin, spacing and direction matrix
-// (and an extent that does not start at 0), every point sits on the centre of
+// (and an extent that does not start at 0), every point sits on the center of
 // a sampled voxel; the field data records the sampling grid.
 #include "SamplerTestUtilities.h"
 #include "vtkDoubleArray.h"
@@ -71,9 +71,9 @@ int main()
           ++offCentre;
         }
       }
-      double centre[3];
-      image->TransformIndexToPhysicalPoint(index, centre);
-      if (std::sqrt(vtkMath::Distance2BetweenPoints(centre, x)) > tol * 10)
+      double center[3];
+      image->TransformIndexToPhysicalPoint(index, center);
+      if (std::sqrt(vtkMath::Distance2BetweenPoints(center, x)) > tol * 10)
       {
         ++offCentre;
       }
@@ -84,7 +84,7 @@ int main()
       }
       seen.insert(id);
     }
-    Check(offCentre == 0, Str(offCentre) + " points off a voxel centre");
+    Check(offCentre == 0, Str(offCentre) + " points off a voxel center");
     Check(notInMask == 0, Str(notInMask) + " points not on a masked voxel");
     Check(static_cast<vtkIdType>(seen.size()) == n, "no voxel sampled twice");
 

@@ -31,7 +31,7 @@ struct Tally
 };
 
 // Shell index (0-based) of every voxel with g > 0; -1 for empty voxels. The
-// neighbourhood is the 18 voxels within 1.5 voxels.
+// neighborhood is the 18 voxels within 1.5 voxels.
 std::vector<int> ShellsOf(const std::vector<float>& g, const int dims[3])
 {
   const vtkIdType nx = dims[0], ny = dims[1], nz = dims[2];

@@ -82,7 +82,7 @@ int main()
         }
       }
       Check(inside && order.size() == rank.size(), where + ": every voxel exactly once");
-      // Serpentine: consecutive voxels are neighbours.
+      // Serpentine: consecutive voxels are neighbors.
       bool adjacent = true;
       for (size_t r = 1; r < order.size(); ++r)
       {

@@ -53,7 +53,7 @@ int main()
       "bowl found past a wall of NaN");
   }
   {
-    // The budget is honoured.
+    // The budget is honored.
     vtkNelderMeadMinimizer tight;
     tight.SetMaximumEvaluations(30);
     const auto r = tight.Minimize(rosenbrock, { -1.2, 1.0 }, { 0.5, 0.5 });

@@ -2,7 +2,7 @@
 // SPDX-License-Identifier: BSD-3-Clause
 // Blue-noise quality of the point-set peers on a constant 64^3 cube at
 // g = 8/255 and 32/255, with vtkBlueNoiseSpectrumKernel (whole volume, single
-// realisations, mean of two seeds): the low-frequency ratio L well below that
+// realizations, mean of two seeds): the low-frequency ratio L well below that
 // of white noise with the same count, and a mean anisotropy (shells 1 .. 32)
 // near 0 dB, where a set denser along the faces has 1.5 to 3.6 dB.
 #include "PeerKernelTestUtilities.h"
@@ -36,7 +36,7 @@ Quality Measure(const std::function<std::vector<unsigned char>(int seed)>& sampl
     const std::vector<unsigned char> mask = sample(seed);
     spectrum.Reset();
     std::string error;
-    Check(spectrum.AddRealisation(mask.data(), &error), "AddRealisation: " + error);
+    Check(spectrum.AddRealization(mask.data(), &error), "AddRealization: " + error);
     vtkBlueNoiseSpectrumKernel::Result result;
     spectrum.Compute(result);
     q.L += result.LowFrequencyRatio / Seeds;

@@ -24,8 +24,8 @@ from bluenoise_testing import SKIP, check, finish
 
 
 def image_stats(path):
-    """(width, height, fraction of pixels unlike the background, number of colours,
-    fraction of the most frequent colour)."""
+    """(width, height, fraction of pixels unlike the background, number of colors,
+    fraction of the most frequent color)."""
     from vtkmodules.util.numpy_support import vtk_to_numpy
     from vtkmodules.vtkIOImage import vtkPNGReader
     import numpy as np
@@ -39,11 +39,11 @@ def image_stats(path):
     if scalars is None or w * h == 0:
         return w, h, 0.0, 0, 0.0
     pixels = vtk_to_numpy(scalars).reshape(h * w, -1)[:, :3].astype(np.int32)
-    # The background is the most frequent colour.
-    colours, counts = np.unique(pixels, axis=0, return_counts=True)
-    background = colours[np.argmax(counts)]
+    # The background is the most frequent color.
+    colors, counts = np.unique(pixels, axis=0, return_counts=True)
+    background = colors[np.argmax(counts)]
     differs = np.any(np.abs(pixels - background) > 8, axis=1)
-    return w, h, float(differs.mean()), len(colours), float(counts.max()) / len(pixels)
+    return w, h, float(differs.mean()), len(colors), float(counts.max()) / len(pixels)
 
 
 # Lines of the paraview output that are not the GUI's: Xvfb's own start-up notes.
@@ -166,12 +166,12 @@ def main():
         path = result.get(key)
         if not check(path is not None and os.path.exists(path), "%s screenshot saved (%s)" % (what, path)):
             continue
-        w, h, fraction, colours, background = image_stats(path)
+        w, h, fraction, colors, background = image_stats(path)
         check((w, h) == size, "%s screenshot is %dx%d (%dx%d)" % (what, size[0], size[1], w, h))
-        check(fraction > 0.005 and colours > 16,
-              "%s screenshot is not blank (%.2f%% of pixels unlike the background, %d colours)"
-              % (what, 100 * fraction, colours))
-        # A rendered view has a background; an unrealised window gives noise.
+        check(fraction > 0.005 and colors > 16,
+              "%s screenshot is not blank (%.2f%% of pixels unlike the background, %d colors)"
+              % (what, 100 * fraction, colors))
+        # A rendered view has a background; an unrealized window gives noise.
         check(background > 0.3, "%s screenshot has a background (%.1f%% of pixels), not noise"
               % (what, 100 * background))
     finish()

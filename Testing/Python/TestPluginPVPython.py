@@ -149,7 +149,7 @@ def run_wavelet():
     names = point_array_names(out)
     check("RTData" in names and "Density" in names, "arrays carried: %s" % names)
     if "RTData" in names and "Density" in names:
-        # The points are at voxel centres (integer coordinates): look their values up.
+        # The points are at voxel centers (integer coordinates): look their values up.
         xyz = vtk_to_numpy(out.GetPoints().GetData()).astype(np.float64)
         ijk = np.rint(xyz).astype(int) + 20
         ids = ijk[:, 0] + 41 * (ijk[:, 1] + 41 * ijk[:, 2])

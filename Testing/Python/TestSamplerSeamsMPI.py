@@ -7,7 +7,7 @@
 Every process samples its z-slab of a 96^3 volume (after scanning the overlap layers above
 it) and sends its points to process 0, which compares them with a serial run of the same
 filter: the count (the pieces draw their own expectation to a point each), the density of
-the 16-layer slabs centred on each seam (within 2 % of the expectation), and the spectrum of
+the 16-layer slabs centered on each seam (within 2 % of the expectation), and the spectrum of
 the whole point set (mean anisotropy within 0.5 dB of the serial run's, L within 3 %). A
 second run with a point budget checks that the statistics are reduced over the processes:
 the pieces' counts add up to NumberOfPoints, and each process read only its own slab.

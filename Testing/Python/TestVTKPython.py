@@ -86,11 +86,11 @@ check(abs(n - expected_count) <= max(2.0, 5e-4 * expected_count),
       "count %d equals the sum of densities %.1f" % (n, expected_count))
 check(points.GetNumberOfVerts() == n, "one vertex cell per point (%d verts)" % points.GetNumberOfVerts())
 
-# Points sit on voxel centres (origin 0, spacing 1: integer coordinates in the extent).
+# Points sit on voxel centers (origin 0, spacing 1: integer coordinates in the extent).
 xyz = vtk_to_numpy(points.GetPoints().GetData()).astype(np.float64)
 ijk = np.rint(xyz).astype(int)
 check(np.abs(xyz - ijk).max() < 1e-5 and ijk.min() >= -20 and ijk.max() <= 20,
-      "points at voxel centres inside the extent")
+      "points at voxel centers inside the extent")
 ids = (ijk[:, 0] + 20) + dims[0] * ((ijk[:, 1] + 20) + dims[1] * (ijk[:, 2] + 20))
 check(len(np.unique(ids)) == n, "at most one point per voxel")
 
@@ -141,7 +141,7 @@ if rows and all(table.GetColumnByName(c) is not None for c in columns):
     check(np.all(vtk_to_numpy(table.GetColumnByName("ShellCount")) > 0), "every shell has samples")
 check(field_value(table, "NumberOfPoints") == n, "NumberOfPoints %s == %d" % (field_value(table, "NumberOfPoints"), n))
 check(field_value(table, "GridDimensions") == (41.0, 41.0, 41.0), "GridDimensions from the sampling grid")
-check(field_value(table, "Realisations") == 1, "one realisation")
+check(field_value(table, "Realizations") == 1, "one realization")
 density = field_value(table, "Density")
 check(density is not None and math.isclose(density, n / rt.size, rel_tol=1e-9),
       "Density %s == N / voxels %.6f" % (density, n / rt.size))
@@ -186,7 +186,7 @@ check(a.shape != c.shape or not np.array_equal(a, c), "Seed 8 gives other points
 check(abs(len(c) - expected_count) <= max(2.0, 5e-4 * expected_count), "Seed 8 count %d exact" % len(c))
 check(np.array_equal(sample(0), vtk_to_numpy(points.GetPoints().GetData())), "default Seed is 0")
 
-# Two realisations averaged by the spectrum.
+# Two realizations averaged by the spectrum.
 other = vtkErrorDiffusionSampler()
 other.SetInputConnection(source.GetOutputPort())
 other.UseNumberOfPointsOff()
@@ -194,9 +194,9 @@ other.SetDensityScale(SCALE)
 other.SetSeed(8)
 spectrum.AddInputConnection(other.GetOutputPort())
 spectrum.Update()
-check(field_value(spectrum.GetOutput(), "Realisations") == 2, "two realisations")
+check(field_value(spectrum.GetOutput(), "Realizations") == 2, "two realizations")
 check(math.isclose(field_value(spectrum.GetOutput(), "NumberOfPoints"), (n + len(c)) / 2.0),
-      "NumberOfPoints is the mean over realisations")
+      "NumberOfPoints is the mean over realizations")
 
 # Identity and transfer-function mappings follow their definitions.
 ident = vtkErrorDiffusionSampler()
@@ -338,7 +338,7 @@ for name, value in svalues.items():
 sp.SetWeight(1.5)
 check(sp.GetWeight() == 1.0, "Weight clamped to 1")
 
-# The spectrum honours UseInputGrid off + GridDimensions (+ GridBounds).
+# The spectrum honors UseInputGrid off + GridDimensions (+ GridBounds).
 sp.SetWeight(0.02)
 sp.SetUseGridBounds(False)
 sp.SetInputConnection(sampler.GetOutputPort())
