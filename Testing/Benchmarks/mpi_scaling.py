@@ -7,8 +7,8 @@
 Each process asks a constant source of edge^3 voxels (a Wavelet without its
 waves) for its piece (so no process holds the whole volume), samples it with
 vtkPErrorDiffusionSampler (default settings but for the identity mapping: relaxed
-error diffusion, a budget of 2 % of the voxels), and process 0 gathers the points and measures
-them with vtkBlueNoiseSpectrum. Process 0 prints one Markdown row:
+error diffusion, a budget of 2 % of the voxels), and vtkPBlueNoiseSpectrum measures the points
+of all processes once (gathered to process 0). Process 0 prints one Markdown row:
 processes, seconds (the slowest process, from its update request to its
 points), points, L(g) and the mean anisotropy (dB, shells 1 .. edge/2) of the
 gathered set.
@@ -19,16 +19,16 @@ import time
 
 from vtkmodules.vtkImagingCore import vtkRTAnalyticSource
 from vtkmodules.vtkParallelCore import vtkMultiProcessController
-from vtkmodules.vtkFiltersCore import vtkAppendPolyData
-from vtkmodules.vtkCommonCore import vtkDoubleArray
-from vtkmodules.vtkCommonDataModel import vtkPolyData
+from vtkmodules.vtkCommonCore import vtkDoubleArray, vtkIdTypeArray
+from vtkmodules.vtkParallelCore import vtkCommunicator
 from vtkmodules.util.numpy_support import vtk_to_numpy
-from bluenoise import vtkBlueNoiseSpectrum, vtkPErrorDiffusionSampler
+from bluenoise import vtkPBlueNoiseSpectrum, vtkPErrorDiffusionSampler
 
 
 def main():
     parser = argparse.ArgumentParser()
     parser.add_argument("--edge", type=int, default=256)
+    parser.add_argument("--method", type=int, default=2, help="the sampler's Method (2: default)")
     args, _ = parser.parse_known_args()
     controller = vtkMultiProcessController.GetGlobalController()
     ranks, rank = controller.GetNumberOfProcesses(), controller.GetLocalProcessId()
@@ -43,40 +43,42 @@ def main():
     sampler.SetController(controller if ranks > 1 else None)
     sampler.SetInputConnection(source.GetOutputPort())
     sampler.SetDensityMappingToIdentity()
+    sampler.SetMethod(args.method)
     sampler.SetNumberOfPoints(int(0.02 * args.edge ** 3))
     controller.Barrier()
     start = time.perf_counter()
     sampler.UpdatePiece(rank, ranks, 0)
     seconds = time.perf_counter() - start
-    mine = vtkPolyData()
-    mine.ShallowCopy(sampler.GetOutput())
+    # The spectrum of the gathered points, as the plugin computes it.
+    spectrum = vtkPBlueNoiseSpectrum()
+    spectrum.SetController(controller if ranks > 1 else None)
+    spectrum.SetInputConnection(sampler.GetOutputPort())
+    spectrum.UpdatePiece(rank, ranks, 0)
+    slowest = vtkDoubleArray()
+    controller.Reduce(_value(seconds), slowest,
+                      vtkCommunicator.MAX_OP, 0)
+    points = vtkIdTypeArray()
+    controller.Reduce(_count(sampler.GetOutput().GetNumberOfPoints()), points,
+                      vtkCommunicator.SUM_OP, 0)
     if rank == 0:
-        append = vtkAppendPolyData()
-        append.AddInputData(mine)
-        for other in range(1, ranks):
-            piece = vtkPolyData()
-            controller.Receive(piece, other, 77)
-            append.AddInputData(piece)
-            theirs = vtkDoubleArray()
-            controller.Receive(theirs, other, 78)
-            seconds = max(seconds, theirs.GetValue(0))
-        append.Update()
-        points = append.GetOutput()
-        points.GetFieldData().ShallowCopy(mine.GetFieldData())  # the sampling grid
-        spectrum = vtkBlueNoiseSpectrum()
-        spectrum.SetInputData(points)
-        spectrum.Update()
         table = spectrum.GetOutput()
         aniso = vtk_to_numpy(table.GetColumnByName("AnisotropyDB"))
         low = table.GetFieldData().GetArray("LowFrequencyRatio").GetValue(0)
         print("| %d | %.2f | %d | %.4f | %.2f |" % (
-            ranks, seconds, points.GetNumberOfPoints(), low, aniso[1:args.edge // 2 + 1].mean()),
-            flush=True)
-    else:
-        controller.Send(mine, 0, 77)
-        theirs = vtkDoubleArray()
-        theirs.InsertNextValue(seconds)
-        controller.Send(theirs, 0, 78)
+            ranks, slowest.GetValue(0), points.GetValue(0), low,
+            aniso[1:args.edge // 2 + 1].mean()), flush=True)
+
+
+def _value(x):
+    array = vtkDoubleArray()
+    array.InsertNextValue(x)
+    return array
+
+
+def _count(n):
+    array = vtkIdTypeArray()
+    array.InsertNextValue(n)
+    return array
 
 
 if __name__ == "__main__":
