@@ -199,11 +199,15 @@ void vtkBlueNoiseRelaxation::RelaxSample(int x, int y, int z, float g)
   {
     const double spacing = std::cbrt(1.0 / g);
     this->Limit = 0.75 * spacing * spacing;
-    this->SetRadius(std::min(static_cast<int>(std::ceil(0.87 * spacing)) + 1, MaximumRadius));
+    // Clamped before the conversion to int: tiny densities have a huge spacing.
+    this->SetRadius(static_cast<int>(
+      std::min(std::ceil(0.87 * spacing) + 1.0, static_cast<double>(MaximumRadius))));
     this->LastDensity = g;
   }
-  // Only whether p has a sample nearer than the limit matters here.
-  const int cap = static_cast<int>(std::ceil(this->Limit));
+  // Only whether p has a sample nearer than the limit matters here (nothing
+  // beyond the search radius can be found).
+  const int cap = static_cast<int>(std::min(
+    std::ceil(this->Limit), static_cast<double>((this->Radius + 1) * (this->Radius + 1))));
   const int current = this->NearestSquared(x, y, z, cap, -1, x, y, z);
   if (current >= this->Limit)
   {

@@ -407,8 +407,11 @@ std::vector<std::array<int, 3>> vtkErrorDiffusionPointAssembler::RemoveLast(vtkI
     std::array<int, 3> ijk;
     for (int r = 0; r < 3; ++r)
     {
-      ijk[r] = static_cast<int>(std::floor(inverse[4 * r] * xyz[0] + inverse[4 * r + 1] * xyz[1] +
-        inverse[4 * r + 2] * xyz[2] + inverse[4 * r + 3] + 0.5));
+      const double index = std::floor(inverse[4 * r] * xyz[0] + inverse[4 * r + 1] * xyz[1] +
+        inverse[4 * r + 2] * xyz[2] + inverse[4 * r + 3] + 0.5);
+      // A degenerate geometry (zero or huge spacing, huge origin) gives no
+      // index: VTK_INT_MIN, outside any extent, rather than an undefined cast.
+      ijk[r] = index >= VTK_INT_MIN && index <= VTK_INT_MAX ? static_cast<int>(index) : VTK_INT_MIN;
     }
     voxels.push_back(ijk);
   }

@@ -833,7 +833,13 @@ void vtkErrorDiffusionSampler::FinishOutput(
       const auto voxels = run.Assembler.RemoveLast(static_cast<vtkIdType>(std::llround(-leftover)));
       for (const auto& ijk : voxels)
       {
-        if (run.Mask)
+        // Only a voxel of the sampled extent: the index comes back from the
+        // point's coordinates, which a degenerate geometry does not invert
+        // (found by fuzzing: an out-of-bounds write into the mask).
+        const bool inside = ijk[0] >= run.Sampled[0] && ijk[0] <= run.Sampled[1] &&
+          ijk[1] >= run.Sampled[2] && ijk[1] <= run.Sampled[3] && ijk[2] >= run.Sampled[4] &&
+          ijk[2] <= run.Sampled[5];
+        if (run.Mask && inside)
         {
           const vtkIdType i = (ijk[0] - run.Sampled[0]) +
             static_cast<vtkIdType>(run.NX()) *

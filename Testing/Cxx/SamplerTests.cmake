@@ -2,6 +2,7 @@
 # SPDX-License-Identifier: BSD-3-Clause
 bluenoise_add_test(TestErrorDiffusionParameterTable LABELS sampler)
 bluenoise_add_test(TestErrorDiffusionSamplerCounts LABELS sampler)
+bluenoise_add_test(TestBlueNoiseRelaxation LABELS sampler)
 bluenoise_add_test(TestErrorDiffusionSamplerDeterminism LABELS sampler threads)
 bluenoise_add_test(TestErrorDiffusionScanGeometry LABELS sampler)
 bluenoise_add_test(TestErrorDiffusionLayerRunner LABELS sampler threads)
