@@ -280,10 +280,18 @@ def nrrd_short_inline_data(ctx):
 
 @case
 def nrrd_sizes_beyond_dimension(ctx):
-    # Three sizes for one dimension (vtkNrrdReader crashed reading it).
-    header = b'NRRD0004\ntype: uint8\ndimension: 1\nsizes: 12 8 4\nencoding: raw\n\n'
+    # Three sizes for two dimensions (vtkNrrdReader crashed reading such).
+    header = b'NRRD0004\ntype: uint8\ndimension: 2\nsizes: 12 8 4\nencoding: raw\n\n'
     expect_file_error(ctx, write(ctx.path('sizes.nrrd'), header + ramp(384)),
-                      'does not have dimension (1) values')
+                      'does not have dimension (2) values')
+
+
+@case
+def nrrd_one_axis(ctx):
+    # A valid one-axis NRRD: vtkNrrdReader (VTK 9.2) crashes on it (found by fuzzing).
+    header = b'NRRD0004\ntype: uint8\ndimension: 1\nsizes: 122\nencoding: raw\n\n'
+    expect_file_error(ctx, write(ctx.path('axis.nrrd'), header + ramp(122)),
+                      "dimension is '1' (2 to 4 supported)")
 
 
 @case
