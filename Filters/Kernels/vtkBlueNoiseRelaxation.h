@@ -44,6 +44,7 @@
 #include "vtkFiltersBlueNoiseModule.h" // for export macro
 #include "vtkType.h"                   // for vtkIdType
 
+#include <cstddef>
 #include <cstdint>
 #include <vector>
 
@@ -84,11 +85,12 @@ private:
     std::vector<float> Density;
     std::vector<unsigned char> Mask;
     std::vector<unsigned char> Moved; // samples that moved here: they move no more
-    std::vector<std::uint64_t> Bits; // the mask, rows padded to whole words
+    std::vector<std::uint64_t> Bits; // the mask, rows padded to whole words, zero rows around
     bool Relaxable = false;          // some density of the layer is in (0, 1/4]
   };
 
   Slot* Find(int z);
+  const std::uint64_t* Row(const std::uint64_t* bits, int y) const;
   bool Sample(int x, int y, int z);
   float DensityAt(int x, int y, int z);
   void Set(int x, int y, int z, bool sample);
@@ -96,6 +98,7 @@ private:
   int NearestSquared(
     int x, int y, int z, int best, int enough, int exceptX, int exceptY, int exceptZ);
   void RelaxLayer(int z);
+  void Prefetch(std::size_t i, int z);
   void RelaxSample(int x, int y, int z, float g);
   void Release(int z);
 
@@ -120,6 +123,7 @@ private:
   std::vector<RowOffset> Rows; // within Radius, nearest first
   int Nearest[3] = { 0, 0, 0 }; // offset of the sample NearestSquared found
   std::vector<Slot> Ring;
+  std::vector<std::uint64_t> NoSamples; // the bits of a layer outside the ring
   std::vector<Layer> Done;
   std::vector<std::uint64_t> Order; // hash and index of a layer's samples
 };
