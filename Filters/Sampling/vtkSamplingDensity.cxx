@@ -8,6 +8,7 @@
 #include "vtkPiecewiseFunction.h"
 #include "vtkSMPThreadLocal.h"
 #include "vtkSMPTools.h"
+#include "vtkTypeTraits.h"
 
 #include <algorithm>
 #include <cmath>
@@ -141,6 +142,8 @@ struct StatisticsWorker
 
 struct FillWorker
 {
+  vtkSamplingDensity::ValueTable& Table;
+
   template <typename ArrayT>
   void operator()(ArrayT* array, vtkIdType begin, vtkIdType end, int component,
     const unsigned char* ghosts, vtkPiecewiseFunction* function, double scale,
@@ -163,7 +166,7 @@ struct FillWorker
     {
       if (component >= 0 && !function)
       {
-        sum = this->FillByTable(array, begin, end, component, ghosts, density, out);
+        sum = this->FillByTable(array, begin, end, component, ghosts, map, scale, density, out);
         return;
       }
     }
@@ -187,7 +190,8 @@ struct FillWorker
   // voxel instead of the mapping, and the sum from the counts per value.
   template <typename ArrayT, typename DensityF>
   double FillByTable(ArrayT* array, vtkIdType begin, vtkIdType end, int component,
-    const unsigned char* ghosts, const DensityF& density, float* out) const
+    const unsigned char* ghosts, const vtkSamplingBudget::Mapping& map, double scale,
+    const DensityF& density, float* out) const
   {
     using T = vtk::GetAPIType<ArrayT>;
     constexpr int offset = std::is_signed<T>::value ? -static_cast<int>(std::numeric_limits<T>::min()) : 0;
@@ -207,12 +211,23 @@ struct FillWorker
       }
       return total;
     }
-    std::vector<float> table(values);
-    for (size_t v = 0; v < values; ++v)
+    vtkSamplingDensity::ValueTable& cache = this->Table;
+    constexpr int type = vtkTypeTraits<T>::VTK_TYPE_ID;
+    if (cache.Type != type || cache.A != map.A || cache.B != map.B || cache.Scale != scale)
     {
-      table[v] = density(static_cast<double>(static_cast<int>(v) - offset));
+      cache.Density.resize(values);
+      for (size_t v = 0; v < values; ++v)
+      {
+        cache.Density[v] = density(static_cast<double>(static_cast<int>(v) - offset));
+      }
+      cache.Type = type;
+      cache.A = map.A;
+      cache.B = map.B;
+      cache.Scale = scale;
     }
-    std::vector<vtkIdType> counts(values, 0);
+    const std::vector<float>& table = cache.Density;
+    std::vector<vtkIdType>& counts = cache.Counts;
+    counts.assign(values, 0);
     const auto all = vtk::DataArrayValueRange(array);
     const int nc = array->GetNumberOfComponents();
     for (vtkIdType t = begin; t < end; ++t)
@@ -321,7 +336,7 @@ void vtkSamplingDensity::Finish(const vtkSamplingBudget* statistics, const char*
 double vtkSamplingDensity::Fill(vtkDataArray* array, vtkIdType begin, vtkIdType end,
   const unsigned char* ghosts, float* out) const
 {
-  FillWorker worker;
+  FillWorker worker{ this->Table };
   double sum = 0.0;
   if (!vtkArrayDispatch::Dispatch::Execute(array, worker, begin, end, this->Component, ghosts,
         this->Function, this->Scale, this->Map, out, sum))

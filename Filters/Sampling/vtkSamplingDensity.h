@@ -21,8 +21,8 @@
  * without finite values gives density 0 everywhere.
  *
  * The same object serves every layer of a run (and every slab of a streamed
- * one): it is configured once, then FillLayer is called for each layer (from
- * any one thread at a time).
+ * one): it is configured once, then Fill is called for each layer (from one
+ * thread at a time: it keeps a table of densities from layer to layer).
  */
 #ifndef vtkSamplingDensity_h
 #define vtkSamplingDensity_h
@@ -30,6 +30,8 @@
 #include "vtkFiltersBlueNoiseModule.h" // for export macro
 #include "vtkSamplingBudget.h"         // for vtkSamplingBudget::Mapping
 #include "vtkType.h"                   // for vtkIdType
+
+#include <vector> // for std::vector
 
 class vtkDataArray;
 class vtkPiecewiseFunction;
@@ -95,8 +97,22 @@ private:
   bool RangeSet = false;
   double Range[2] = { 0.0, 1.0 };
   vtkSamplingBudget::Mapping Map;
-  double PreScale = 1.0; // values are multiplied by it first (1, or 0.5 for huge ranges)
   double Scale = 1.0;
+
+public:
+  /// The densities of every 8- or 16-bit value, built by the first Fill of
+  /// a run and kept for the next layers while type and map stay the same
+  /// (a 16-bit table costs as much as a 256^2 layer). For Fill only.
+  struct ValueTable
+  {
+    int Type = -1; // VTK type of the values, -1 for none
+    double A = 0.0, B = 0.0, Scale = 0.0;
+    std::vector<float> Density;
+    std::vector<vtkIdType> Counts; // per value, in the layer being filled
+  };
+
+private:
+  mutable ValueTable Table;
 };
 
 #endif

@@ -2,11 +2,13 @@
 // SPDX-License-Identifier: BSD-3-Clause
 // Same seed: the same points bit for bit; another seed: other points; the scan
 // on a worker thread or not: the same output. Density g and 1 - g with the same
-// seed: complementary masks (the mirrored process).
+// seed: complementary masks (the mirrored process). 16-bit values: the points
+// of the same values as floats.
 #include "SamplerTestUtilities.h"
 #include "vtkDataArray.h"
 #include "vtkPointData.h"
 #include "vtkPoints.h"
+#include "vtkUnsignedShortArray.h"
 
 #include <cstring>
 
@@ -101,6 +103,43 @@ int main()
   sampler->SetSeed(7);
   sampler->Update();
   Check(SamePoints(sampler->GetOutput(), first), "seed restored gives the first points again");
+
+  // 16-bit values on layers of 512^2 go through a table of densities kept
+  // from layer to layer: the same points as the same values in floats, and a
+  // table rebuilt when the scale changes on the same filter.
+  {
+    auto asFloat = MakeVolume(512, 512, 3, [](int i, int j, int k) {
+      return static_cast<float>((i * 131 + j * 71 + k * 17) % 9000);
+    });
+    auto asShort = vtkSmartPointer<vtkImageData>::New();
+    asShort->CopyStructure(asFloat);
+    vtkNew<vtkUnsignedShortArray> values;
+    values->SetName("values");
+    values->SetNumberOfValues(asFloat->GetNumberOfPoints());
+    for (vtkIdType i = 0; i < values->GetNumberOfValues(); ++i)
+    {
+      values->SetValue(i, static_cast<unsigned short>(asFloat->GetPointData()->GetScalars()->GetTuple1(i)));
+    }
+    asShort->GetPointData()->SetScalars(values);
+    auto scaled = [](double scale) {
+      return [scale](vtkErrorDiffusionSampler* s) {
+        s->SetDensityMappingToScalarRange();
+        s->SetDensityScale(scale);
+      };
+    };
+    auto reference = Sample(asFloat, scaled(0.1));
+    vtkNew<vtkErrorDiffusionSampler> reused;
+    reused->SetInputData(asShort);
+    scaled(0.3)(reused);
+    reused->UseNumberOfPointsOff();
+    reused->Update();
+    scaled(0.1)(reused);
+    reused->Update();
+    Check(reference->GetNumberOfPoints() > 1000 && SamePoints(reused->GetOutput(), reference),
+      "16-bit values through the table give the points of the same values as floats, after a "
+      "change of scale (" + Str(reused->GetOutput()->GetNumberOfPoints()) + " and " +
+        Str(reference->GetNumberOfPoints()) + " points)");
+  }
 
   // Complement: density g and 1 - g, same seed.
   const int L = 32;
