@@ -36,45 +36,6 @@ void vtkSamplingBudget::Reset()
 }
 
 //------------------------------------------------------------------------------
-int vtkSamplingBudget::BucketOf(double x)
-{
-  const float f = static_cast<float>(x);
-  std::uint32_t bits = 0;
-  std::memcpy(&bits, &f, sizeof(bits));
-  // Order-preserving: negative values have their bits flipped, positive ones
-  // their sign set, so unsigned order is value order.
-  bits = (bits & 0x80000000u) ? ~bits : (bits | 0x80000000u);
-  return static_cast<int>(bits >> 16);
-}
-
-//------------------------------------------------------------------------------
-void vtkSamplingBudget::Add(double x, double n)
-{
-  if (std::isnan(x))
-  {
-    return;
-  }
-  if (std::isinf(x))
-  {
-    (x > 0.0 ? this->PositiveInfinities : this->NegativeInfinities) += n;
-    return;
-  }
-  Bucket& b = this->Buckets[BucketOf(x)];
-  if (b.Count == 0.0)
-  {
-    b.Min = x;
-    b.Max = x;
-  }
-  else
-  {
-    b.Min = std::min(b.Min, x);
-    b.Max = std::max(b.Max, x);
-  }
-  b.Count += n;
-  b.Mean += (x - b.Mean) * (n / b.Count);
-}
-
-//------------------------------------------------------------------------------
 void vtkSamplingBudget::Merge(const vtkSamplingBudget& other)
 {
   for (int i = 0; i < NumberOfBuckets; ++i)
@@ -88,7 +49,7 @@ void vtkSamplingBudget::Merge(const vtkSamplingBudget& other)
     b.Min = b.Count == 0.0 ? o.Min : std::min(b.Min, o.Min);
     b.Max = b.Count == 0.0 ? o.Max : std::max(b.Max, o.Max);
     b.Count += o.Count;
-    b.Mean += (o.Mean - b.Mean) * (o.Count / b.Count);
+    b.Sum += o.Sum;
   }
   this->PositiveInfinities += other.PositiveInfinities;
   this->NegativeInfinities += other.NegativeInfinities;
@@ -117,7 +78,7 @@ bool vtkSamplingBudget::GetRange(double range[2]) const
 }
 
 //------------------------------------------------------------------------------
-double vtkSamplingBudget::BucketExpected(const Bucket& b, double scale, const Mapping& map) const
+double vtkSamplingBudget::BucketExpected(const Summary& b, double scale, const Mapping& map)
 {
   const double low = map.A * b.Min + map.B;
   const double high = map.A * b.Max + map.B;
@@ -147,24 +108,38 @@ double vtkSamplingBudget::BucketExpected(const Bucket& b, double scale, const Ma
 //------------------------------------------------------------------------------
 double vtkSamplingBudget::Expected(double scale, const Mapping& map) const
 {
-  return this->ExpectedOver(this->Buckets, scale, map);
+  return this->ExpectedOver(this->Summarize(), scale, map);
+}
+
+//------------------------------------------------------------------------------
+// The used buckets with their means (the sum over the count, back in the
+// values' units: no overflow).
+std::vector<vtkSamplingBudget::Summary> vtkSamplingBudget::Summarize() const
+{
+  std::vector<Summary> used;
+  for (int i = 0; i < NumberOfBuckets; ++i)
+  {
+    const Bucket& b = this->Buckets[i];
+    if (b.Count > 0.0)
+    {
+      used.push_back({ b.Count, b.Sum / b.Count * UnitOf(i), b.Min, b.Max });
+    }
+  }
+  return used;
 }
 
 //------------------------------------------------------------------------------
 double vtkSamplingBudget::ExpectedOver(
-  const std::vector<Bucket>& buckets, double scale, const Mapping& map) const
+  const std::vector<Summary>& used, double scale, const Mapping& map) const
 {
   if (!(scale > 0.0))
   {
     return 0.0;
   }
   double sum = this->PositiveInfinities;
-  for (const Bucket& b : buckets)
+  for (const Summary& b : used)
   {
-    if (b.Count > 0.0)
-    {
-      sum += this->BucketExpected(b, scale, map);
-    }
+    sum += BucketExpected(b, scale, map);
   }
   return sum;
 }
@@ -173,9 +148,7 @@ double vtkSamplingBudget::ExpectedOver(
 vtkSamplingBudget::Solution vtkSamplingBudget::Solve(double target, const Mapping& map) const
 {
   Solution solution;
-  std::vector<Bucket> used; // the bisection evaluates the sum many times
-  std::copy_if(this->Buckets.begin(), this->Buckets.end(), std::back_inserter(used),
-    [](const Bucket& b) { return b.Count > 0.0; });
+  const std::vector<Summary> used = this->Summarize(); // the bisection sums many times
   const auto expected = [&](double scale) { return this->ExpectedOver(used, scale, map); };
   const double infinity = std::numeric_limits<double>::infinity();
   solution.Reachable = expected(infinity);
@@ -219,7 +192,7 @@ std::vector<double> vtkSamplingBudget::Serialize() const
   values.reserve(4 * static_cast<size_t>(NumberOfBuckets) + 2);
   for (const Bucket& b : this->Buckets)
   {
-    values.insert(values.end(), { b.Count, b.Mean, b.Min, b.Max });
+    values.insert(values.end(), { b.Count, b.Sum, b.Min, b.Max });
   }
   values.push_back(this->PositiveInfinities);
   values.push_back(this->NegativeInfinities);

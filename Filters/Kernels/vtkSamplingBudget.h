@@ -10,13 +10,15 @@
  * transfer function's output), a x + b a linear mapping (a > 0; a = 1, b = 0
  * for values that already are densities) and s the density scale; the
  * expected number of points is the sum of g over the voxels. The budget
- * collects a histogram of x in one pass (Add, AddCount, Merge) and then solves
+ * collects a histogram of x in one pass (Add, Merge) and then solves
  * for the s that makes that sum a target (Solve), through the clamp at 1,
  * exactly where the histogram is exact.
  *
  * Histogram. 65536 buckets keyed by the top 16 bits of x as a float (sign,
  * exponent and 7 bits of mantissa, ordered like the values), each with the
- * count, mean, minimum and maximum of its values: a bucket whose values are all
+ * count, sum, minimum and maximum of its values (the sum in units of the
+ * bucket's power of two, 2^k for values in [2^k, 2^(k+1)): exact scaling,
+ * no overflow near 1e308, no division per value): a bucket whose values are all
  * equal (every value of 8- and 16-bit data, and any value of fewer than 2^7
  * distinct values per power of two) is exact. NaN is not counted (its density
  * is 0); +inf and -inf are counted apart (density 1 and 0 for any s > 0).
@@ -37,7 +39,10 @@
 
 #include "vtkFiltersBlueNoiseModule.h" // for export macro
 
+#include <algorithm>
+#include <cmath>
 #include <cstdint>
+#include <cstring>
 #include <vector>
 
 class VTKFILTERSBLUENOISE_EXPORT vtkSamplingBudget
@@ -48,7 +53,7 @@ public:
   struct Bucket
   {
     double Count = 0.0;
-    double Mean = 0.0; // kept as a mean: a sum of values near 1e308 would overflow
+    double Sum = 0.0; // in units of UnitOf(the bucket): a plain sum could overflow
     double Min = 0.0;
     double Max = 0.0;
   };
@@ -74,10 +79,39 @@ public:
   void Reset();
 
   /// The bucket of a value (NaN and infinities are not bucketed).
-  static int BucketOf(double x);
+  static int BucketOf(double x)
+  {
+    const float f = static_cast<float>(x);
+    std::uint32_t bits = 0;
+    std::memcpy(&bits, &f, sizeof(bits));
+    // Order-preserving: negative values have their bits flipped, positive ones
+    // their sign set, so unsigned order is value order.
+    bits = (bits & 0x80000000u) ? ~bits : (bits | 0x80000000u);
+    return static_cast<int>(bits >> 16);
+  }
 
-  /// Count one value (n times).
-  void Add(double x, double n = 1.0);
+  /// The power of two a bucket's sum is counted in (its values' magnitude,
+  /// 2^-126 for zero and the float subnormals).
+  static double UnitOf(int bucket) { return PowerOfTwo(Exponent(bucket) - 127); }
+
+  /// Count one value (n times); inline, as a pass calls it for every voxel.
+  void Add(double x, double n = 1.0)
+  {
+    if (!std::isfinite(x))
+    {
+      if (std::isinf(x))
+      {
+        (x > 0.0 ? this->PositiveInfinities : this->NegativeInfinities) += n;
+      }
+      return;
+    }
+    const int i = BucketOf(x);
+    Bucket& b = this->Buckets[i];
+    b.Min = b.Count == 0.0 ? x : std::min(b.Min, x);
+    b.Max = b.Count == 0.0 ? x : std::max(b.Max, x);
+    b.Count += n;
+    b.Sum += n * (x * PowerOfTwo(127 - Exponent(i))); // exact: a power of two
+  }
 
   /// Add another histogram (another piece or thread of the same volume).
   void Merge(const vtkSamplingBudget& other);
@@ -91,14 +125,34 @@ public:
   /// The scale whose expected count is `target` (> 0).
   Solution Solve(double target, const Mapping& map) const;
 
-  /// For reductions across processes: the buckets' counts, means, minima and
+  /// For reductions across processes: the buckets' counts, sums, minima and
   /// maxima, then +inf and -inf counts, as one flat array (and back).
   std::vector<double> Serialize() const;
   bool Deserialize(const std::vector<double>& values);
 
 private:
-  double BucketExpected(const Bucket& b, double scale, const Mapping& map) const;
-  double ExpectedOver(const std::vector<Bucket>& buckets, double scale, const Mapping& map) const;
+  // A used bucket as Solve needs it.
+  struct Summary
+  {
+    double Count, Mean, Min, Max;
+  };
+  // The float exponent field of a bucket's values, at least 1.
+  static int Exponent(int bucket)
+  {
+    const int bits = bucket >= 0x8000 ? bucket : ~bucket;
+    return std::max((bits >> 7) & 0xFF, 1);
+  }
+  // 2^e for -1022 <= e <= 1023, built from its bits.
+  static double PowerOfTwo(int e)
+  {
+    const std::uint64_t bits = static_cast<std::uint64_t>(e + 1023) << 52;
+    double value = 0.0;
+    std::memcpy(&value, &bits, sizeof(value));
+    return value;
+  }
+  std::vector<Summary> Summarize() const;
+  static double BucketExpected(const Summary& b, double scale, const Mapping& map);
+  double ExpectedOver(const std::vector<Summary>& used, double scale, const Mapping& map) const;
 
   std::vector<Bucket> Buckets;
   double PositiveInfinities = 0.0;

@@ -62,19 +62,12 @@ struct StatisticsWorker
     }
     if (function) // not known to be safe from several threads
     {
-      for (vtkIdType t = begin; t < end; ++t)
-      {
-        this->AddTuple(array, t, component, ghosts, function, out);
-      }
+      this->AddTuples(array, begin, end, component, ghosts, function, out);
       return;
     }
     vtkSMPThreadLocal<vtkSamplingBudget> local;
     vtkSMPTools::For(begin, end, 65536, [&](vtkIdType first, vtkIdType last) {
-      vtkSamplingBudget& mine = local.Local();
-      for (vtkIdType t = first; t < last; ++t)
-      {
-        this->AddTuple(array, t, component, ghosts, nullptr, mine);
-      }
+      this->AddTuples(array, first, last, component, ghosts, nullptr, local.Local());
     });
     for (auto& partial : local)
     {
@@ -83,20 +76,23 @@ struct StatisticsWorker
   }
 
   template <typename ArrayT>
-  void AddTuple(ArrayT* array, vtkIdType t, int component, const unsigned char* ghosts,
-    vtkPiecewiseFunction* function, vtkSamplingBudget& out) const
+  void AddTuples(ArrayT* array, vtkIdType first, vtkIdType last, int component,
+    const unsigned char* ghosts, vtkPiecewiseFunction* function, vtkSamplingBudget& out) const
   {
-    if (ghosts && (ghosts[t] & NotOwned))
+    vtkIdType t = first;
+    for (const auto tuple : vtk::DataArrayTupleRange(array, first, last))
     {
-      return;
+      if (!(ghosts && (ghosts[t] & NotOwned)))
+      {
+        double x = TupleValue(tuple, component);
+        if (function && !std::isnan(x))
+        {
+          x = function->GetValue(x);
+        }
+        out.Add(x);
+      }
+      ++t;
     }
-    const auto tuples = vtk::DataArrayTupleRange(array, t, t + 1);
-    double x = TupleValue(tuples[0], component);
-    if (function && !std::isnan(x))
-    {
-      x = function->GetValue(x);
-    }
-    out.Add(x);
   }
 
   template <typename ArrayT>
