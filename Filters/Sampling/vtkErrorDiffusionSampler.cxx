@@ -539,15 +539,18 @@ bool vtkErrorDiffusionSampler::CollectStatistics(
   input->GetExtent(extent);
   vtkUnsignedCharArray* ghosts = input->GetPointGhostArray();
   const vtkIdType layer = run.LayerSize();
-  // A few million values at a time, to report progress and honor abort.
+  // A few million values at a time, to report progress and honor abort;
+  // split over threads of its own where vtkSMPTools' backend would not.
   const int chunk = static_cast<int>(std::max<vtkIdType>(1, (vtkIdType(1) << 22) / layer));
+  const char* backend = vtkSMPTools::GetBackend();
+  const int threads = backend && std::string(backend) == "Sequential" ? AvailableThreads() : 1;
   for (int z = step.First; z <= step.Last; z += chunk)
   {
     const int last = std::min(step.Last, z + chunk - 1);
     const vtkIdType begin = (z - extent[4]) * layer;
     const vtkIdType end = (last - extent[4] + 1) * layer;
     run.Density.CollectStatistics(
-      array, begin, end, ghosts ? ghosts->GetPointer(0) : nullptr, run.Statistics);
+      array, begin, end, ghosts ? ghosts->GetPointer(0) : nullptr, run.Statistics, threads);
     run.ProgressDone += 0.25 * (last - z + 1);
     this->UpdateProgress(run.ProgressDone / run.ProgressTotal);
     if (this->IsAborted())

@@ -75,7 +75,9 @@
  *
  * Time O(voxels); memory besides the input and the output a few layers. The
  * scan runs on a worker thread while this thread maps the densities and
- * builds the points (UseWorkerThread, when more than one thread is allowed). Progress is reported per layer; abort is honored between
+ * builds the points (UseWorkerThread, when more than one thread is allowed);
+ * the pass over the values that a point budget or an unset scalar range needs
+ * before the scan runs on as many threads as are allowed. Progress is reported per layer; abort is honored between
  * layers and leaves an empty output.
  *
  * Bad input (no array, non-numeric or cell-data array, component out of range,

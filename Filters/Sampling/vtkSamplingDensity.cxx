@@ -13,6 +13,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <thread>
 #include <type_traits>
 #include <vector>
 
@@ -277,8 +278,32 @@ bool vtkSamplingDensity::NeedsStatistics(bool budget) const
 
 //------------------------------------------------------------------------------
 void vtkSamplingDensity::CollectStatistics(vtkDataArray* array, vtkIdType begin, vtkIdType end,
-  const unsigned char* ghosts, vtkSamplingBudget& statistics) const
+  const unsigned char* ghosts, vtkSamplingBudget& statistics, int threads) const
 {
+  // A part must be worth a thread and a histogram of its own (2 MiB).
+  const vtkIdType parts = std::min<vtkIdType>(threads, (end - begin) / (vtkIdType(1) << 18));
+  if (parts > 1 && !this->Function)
+  {
+    std::vector<vtkSamplingBudget> partial(static_cast<size_t>(parts - 1));
+    std::vector<std::thread> workers;
+    const auto bound = [&](vtkIdType k) { return begin + (end - begin) * k / parts; };
+    for (vtkIdType k = 1; k < parts; ++k)
+    {
+      workers.emplace_back([&, k] {
+        this->CollectStatistics(array, bound(k), bound(k + 1), ghosts, partial[k - 1], 1);
+      });
+    }
+    this->CollectStatistics(array, begin, bound(1), ghosts, statistics, 1);
+    for (std::thread& worker : workers)
+    {
+      worker.join();
+    }
+    for (const vtkSamplingBudget& part : partial)
+    {
+      statistics.Merge(part);
+    }
+    return;
+  }
   StatisticsWorker worker;
   if (!vtkArrayDispatch::Dispatch::Execute(
         array, worker, begin, end, this->Component, ghosts, this->Function, statistics))

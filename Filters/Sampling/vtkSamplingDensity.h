@@ -66,9 +66,13 @@ public:
    * Count the values of tuples [begin, end) of `array` into `statistics`
    * (the transfer function already applied). Voxels whose ghost flag (if
    * `ghosts`, indexed like the tuples) marks them as not owned are skipped.
+   * The pass uses vtkSMPTools; with `threads` > 1 it is also split into that
+   * many contiguous parts on threads of its own (for vtkSMPTools' Sequential
+   * backend), each counted apart and merged in order (not with a transfer
+   * function, whose evaluation is not known to be thread-safe).
    */
   void CollectStatistics(vtkDataArray* array, vtkIdType begin, vtkIdType end,
-    const unsigned char* ghosts, vtkSamplingBudget& statistics) const;
+    const unsigned char* ghosts, vtkSamplingBudget& statistics, int threads = 1) const;
 
   /**
    * After the statistics (when needed): take the finite range from them
