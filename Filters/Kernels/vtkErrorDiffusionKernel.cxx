@@ -524,6 +524,7 @@ vtkIdType vtkErrorDiffusionKernel::ScanLayer(
   float carry = this->Carry;
   float cachedG = -1.0f;
   float w[6] = { 0, 0, 0, 0, 0, 0 };
+  float wSum = 0.0f;       // SpreadAtFace's sum of the weights when every target is active
   float base = 0.5f;       // 0.5 - C(g) below g = 0.5, 0.5 + C(1 - g) above
   float modulation = 0.0f; // s * m(g), negative above g = 0.5 (the mirrored process)
   vtkIdType count = 0;
@@ -553,6 +554,7 @@ vtkIdType vtkErrorDiffusionKernel::ScanLayer(
       {
         const LevelParameters lp = this->ParametersOf(g);
         std::copy(lp.Weights, lp.Weights + 6, w);
+        wSum = ((((w[0] + w[1]) + w[2]) + w[3]) + w[4]) + w[5];
         base = lp.Base;
         modulation = lp.Modulation;
         cachedG = g;
@@ -589,6 +591,20 @@ vtkIdType vtkErrorDiffusionKernel::ScanLayer(
         hasPrevRow && nextLayerExists && Active(next[idx - V]),
         hasPrevU && nextLayerExists && Active(next[idx - d]),
         nextLayerExists && Active(next[idx]) };
+      if (valid[0] && valid[1] && valid[2] && valid[3] && valid[4] && valid[5] && wSum > 0.0f)
+      {
+        // Inside a support with inactive voxels elsewhere in the layer (any
+        // real volume): SpreadAtFace's arithmetic when every target is
+        // active, without the call.
+        const float f = wSum == 1.0f ? e : e / wSum;
+        cur[idx - d + V] += f * w[TARGET_BACK_V];
+        cur[idx + V] += f * w[TARGET_V];
+        nxt[idx - V] += f * w[TARGET_Z_BACKV];
+        nxt[idx - d] += f * w[TARGET_Z_BACKU];
+        nxt[idx] += f * w[TARGET_Z];
+        carry = f * w[TARGET_U];
+        continue;
+      }
       carry = this->SpreadAtFace(e, w, valid, idx, d, V, &reservoir);
     }
   }
