@@ -12,6 +12,11 @@ namespace
 constexpr int RingSize = 32;
 static_assert(RingSize >= 2 * vtkBlueNoiseRelaxation::MaximumRadius + 3, "ring too small");
 
+// The layers not yet final (the one being relaxed, the one below it and the
+// MaximumRadius above it) keep their densities and masks: these take 6 bytes a
+// voxel, 25 MiB a layer of 2048^2, against 1/8 byte for the bits.
+constexpr int PlaneCount = vtkBlueNoiseRelaxation::MaximumRadius + 3;
+
 // Zero rows above and below a layer's bits: a search reaches past the edges
 // without a test per row.
 constexpr int PadRows = vtkBlueNoiseRelaxation::MaximumRadius + 1;
@@ -86,10 +91,15 @@ void vtkBlueNoiseRelaxation::Begin(int nx, int ny, int firstZ, std::uint64_t see
   for (Slot& slot : this->Ring)
   {
     slot.Z = firstZ - RingSize - 1;
-    slot.Density.resize(layer);
-    slot.Mask.resize(layer);
-    slot.Moved.resize(layer);
     slot.Bits.assign(words, 0);
+  }
+  this->Planes.resize(PlaneCount);
+  for (Plane& plane : this->Planes)
+  {
+    plane.Z = firstZ - RingSize - 1;
+    plane.Density.resize(layer);
+    plane.Mask.resize(layer);
+    plane.Moved.resize(layer);
   }
 }
 
@@ -104,6 +114,18 @@ inline vtkBlueNoiseRelaxation::Slot* vtkBlueNoiseRelaxation::Find(int z)
   }
   Slot& slot = this->Ring[static_cast<size_t>(z - this->First) & (RingSize - 1)];
   return slot.Z == z ? &slot : nullptr;
+}
+
+//------------------------------------------------------------------------------
+// Densities and masks: only for the layers that are not final yet.
+inline vtkBlueNoiseRelaxation::Plane* vtkBlueNoiseRelaxation::FindPlane(int z)
+{
+  if (z < this->First || z > this->Last)
+  {
+    return nullptr;
+  }
+  Plane& plane = this->Planes[static_cast<size_t>(z - this->First) % PlaneCount];
+  return plane.Z == z ? &plane : nullptr;
 }
 
 //------------------------------------------------------------------------------
@@ -123,8 +145,8 @@ inline bool vtkBlueNoiseRelaxation::Sample(int x, int y, int z)
 //------------------------------------------------------------------------------
 inline float vtkBlueNoiseRelaxation::DensityAt(int x, int y, int z)
 {
-  const Slot* slot = this->Find(z);
-  return slot ? slot->Density[x + static_cast<size_t>(this->NX) * y] : 0.0f;
+  const Plane* plane = this->FindPlane(z);
+  return plane ? plane->Density[x + static_cast<size_t>(this->NX) * y] : 0.0f;
 }
 
 //------------------------------------------------------------------------------
@@ -135,7 +157,7 @@ inline void vtkBlueNoiseRelaxation::Set(int x, int y, int z, bool sample)
     const_cast<std::uint64_t*>(this->Row(slot->Bits.data(), y))[x >> 6];
   const std::uint64_t bit = std::uint64_t(1) << (x & 63);
   word = sample ? (word | bit) : (word & ~bit);
-  slot->Mask[x + static_cast<size_t>(this->NX) * y] = sample ? 1 : 0;
+  this->FindPlane(z)->Mask[x + static_cast<size_t>(this->NX) * y] = sample ? 1 : 0;
 }
 
 //------------------------------------------------------------------------------
@@ -271,7 +293,7 @@ void vtkBlueNoiseRelaxation::RelaxSample(int x, int y, int z, float g)
     }
     const int X = x + f[0], Y = y + f[1], Z = z + f[2];
     if (X < 0 || X >= this->NX || Y < 0 || Y >= this->NY || Z < this->Finalized ||
-      !this->Find(Z) || this->Sample(X, Y, Z))
+      !this->FindPlane(Z) || this->Sample(X, Y, Z))
     {
       continue;
     }
@@ -297,7 +319,7 @@ void vtkBlueNoiseRelaxation::RelaxSample(int x, int y, int z, float g)
     const int X = x + Faces[target][0], Y = y + Faces[target][1], Z = z + Faces[target][2];
     this->Set(x, y, z, false);
     this->Set(X, Y, Z, true);
-    this->Find(Z)->Moved[X + static_cast<size_t>(this->NX) * Y] = 1; // once is all
+    this->FindPlane(Z)->Moved[X + static_cast<size_t>(this->NX) * Y] = 1; // once is all
     ++this->Moves;
   }
 }
@@ -319,9 +341,10 @@ void vtkBlueNoiseRelaxation::Prefetch(size_t i, int z)
     {
       __builtin_prefetch(this->Row(slot->Bits.data(), y + dy) + (x >> 6));
     }
-    if (dz >= -1 && dz <= 1)
+    const Plane* plane = dz >= -1 && dz <= 1 ? this->FindPlane(z + dz) : nullptr;
+    if (plane)
     {
-      __builtin_prefetch(slot->Density.data() + i);
+      __builtin_prefetch(plane->Density.data() + i);
     }
   }
 }
@@ -330,7 +353,8 @@ void vtkBlueNoiseRelaxation::Prefetch(size_t i, int z)
 // The samples of layer z, in the hashed order, each given its chance to move.
 void vtkBlueNoiseRelaxation::RelaxLayer(int z)
 {
-  Slot* slot = this->Find(z);
+  const Slot* slot = this->Find(z);
+  Plane* plane = this->FindPlane(z);
   this->Order.clear();
   if (!slot->Relaxable)
   {
@@ -345,7 +369,7 @@ void vtkBlueNoiseRelaxation::RelaxLayer(int z)
       {
         const int x = 64 * w + __builtin_ctzll(bits);
         const size_t i = x + static_cast<size_t>(this->NX) * y;
-        if (!slot->Moved[i] && Relaxable(slot->Density[i]))
+        if (!plane->Moved[i] && Relaxable(plane->Density[i]))
         {
           this->Order.push_back((Hash(this->Seed, x, y, z) & ~std::uint64_t(0xFFFFFFFF)) | i);
         }
@@ -362,10 +386,10 @@ void vtkBlueNoiseRelaxation::RelaxLayer(int z)
     }
     const size_t i = this->Order[k] & 0xFFFFFFFF;
     // An earlier move may have taken this sample away, or put one here.
-    if (slot->Mask[i] && !slot->Moved[i])
+    if (plane->Mask[i] && !plane->Moved[i])
     {
       this->RelaxSample(
-        static_cast<int>(i % this->NX), static_cast<int>(i / this->NX), z, slot->Density[i]);
+        static_cast<int>(i % this->NX), static_cast<int>(i / this->NX), z, plane->Density[i]);
     }
   }
 }
@@ -374,12 +398,12 @@ void vtkBlueNoiseRelaxation::RelaxLayer(int z)
 // Layer z is final: no sample will move into or out of it any more.
 void vtkBlueNoiseRelaxation::Release(int z)
 {
-  Slot* slot = this->Find(z);
+  Plane* plane = this->FindPlane(z);
   Layer layer;
   layer.Z = z;
-  layer.Density = slot->Density.data();
-  layer.Mask = slot->Mask.data();
-  layer.Count = std::count(slot->Mask.begin(), slot->Mask.end(), 1);
+  layer.Density = plane->Density.data();
+  layer.Mask = plane->Mask.data();
+  layer.Count = std::count(plane->Mask.begin(), plane->Mask.end(), 1);
   this->Done.push_back(layer);
   this->Finalized = z + 1;
 }
@@ -392,11 +416,13 @@ const std::vector<vtkBlueNoiseRelaxation::Layer>& vtkBlueNoiseRelaxation::Push(
   this->Last = z;
   Slot& slot = this->Ring[static_cast<size_t>(z - this->First) & (RingSize - 1)];
   slot.Z = z;
-  const size_t layer = slot.Mask.size();
-  std::copy(density, density + layer, slot.Density.begin());
+  Plane& plane = this->Planes[static_cast<size_t>(z - this->First) % PlaneCount];
+  plane.Z = z;
+  const size_t layer = plane.Mask.size();
+  std::copy(density, density + layer, plane.Density.begin());
   slot.Relaxable = std::any_of(density, density + layer, Relaxable);
-  std::copy(mask, mask + layer, slot.Mask.begin());
-  std::fill(slot.Moved.begin(), slot.Moved.end(), 0);
+  std::copy(mask, mask + layer, plane.Mask.begin());
+  std::fill(plane.Moved.begin(), plane.Moved.end(), 0);
   std::fill(slot.Bits.begin(), slot.Bits.end(), 0);
   for (int y = 0; y < this->NY; ++y)
   {

@@ -36,7 +36,8 @@
  * once the layers from z - 1 to z + w are in, layer z is relaxed (its samples
  * may move into z - 1, z or z + 1) and layer z - 1 becomes final: Push
  * returns the final layers, and Flush() the rest after the last one. Memory:
- * a ring of 32 layers of densities and masks (6 bytes and 1 bit per voxel).
+ * the densities, masks and move flags (6 bytes a voxel) of the MaximumRadius
+ * + 3 layers not yet final, and the masks as bits of 32 layers.
  */
 #ifndef vtkBlueNoiseRelaxation_h
 #define vtkBlueNoiseRelaxation_h
@@ -79,17 +80,22 @@ public:
   vtkIdType GetNumberOfMoves() const { return this->Moves; }
 
 private:
-  struct Slot
+  struct Slot // what the searches read, for the layers around the one relaxed
+  {
+    int Z = 0;
+    std::vector<std::uint64_t> Bits; // the mask, rows padded to whole words, zero rows around
+    bool Relaxable = false;          // some density of the layer is in (0, 1/4]
+  };
+  struct Plane // what can still change, for the layers not yet final
   {
     int Z = 0;
     std::vector<float> Density;
     std::vector<unsigned char> Mask;
     std::vector<unsigned char> Moved; // samples that moved here: they move no more
-    std::vector<std::uint64_t> Bits; // the mask, rows padded to whole words, zero rows around
-    bool Relaxable = false;          // some density of the layer is in (0, 1/4]
   };
 
   Slot* Find(int z);
+  Plane* FindPlane(int z);
   const std::uint64_t* Row(const std::uint64_t* bits, int y) const;
   bool Sample(int x, int y, int z);
   float DensityAt(int x, int y, int z);
@@ -123,6 +129,7 @@ private:
   std::vector<RowOffset> Rows; // within Radius, nearest first
   int Nearest[3] = { 0, 0, 0 }; // offset of the sample NearestSquared found
   std::vector<Slot> Ring;
+  std::vector<Plane> Planes;
   std::vector<std::uint64_t> NoSamples; // the bits of a layer outside the ring
   std::vector<Layer> Done;
   std::vector<std::uint64_t> Order; // hash and index of a layer's samples
