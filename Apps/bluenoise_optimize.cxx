@@ -33,6 +33,8 @@ namespace
 {
 using Key = vtkErrorDiffusionParameterTable::Key;
 using LevelResult = vtkErrorDiffusionOptimizer::LevelResult;
+// The finished levels: each one's parameters and its comment line.
+using Finished = std::map<double, std::pair<Key, std::string>>;
 
 struct Options
 {
@@ -79,8 +81,7 @@ std::string Comment(const LevelResult& r, const vtkErrorDiffusionOptimizer::Metr
 }
 
 // Writes every finished level, sorted, with the settings as a header.
-bool WriteTable(const std::string& file, const std::map<double, std::pair<Key, std::string>>& done,
-  const std::string& header)
+bool WriteTable(const std::string& file, const Finished& done, const std::string& header)
 {
   std::vector<Key> keys;
   std::ostringstream comment;
@@ -106,7 +107,7 @@ bool WriteTable(const std::string& file, const std::map<double, std::pair<Key, s
 }
 
 // Levels and their comment lines from a table this program wrote.
-void ReadDone(const std::string& file, std::map<double, std::pair<Key, std::string>>& done)
+void ReadDone(const std::string& file, Finished& done)
 {
   vtkErrorDiffusionParameterTable table;
   std::string error;
@@ -129,6 +130,166 @@ void ReadDone(const std::string& file, std::map<double, std::pair<Key, std::stri
     done[k.Level] = { k, comments.count(k.Level) ? comments[k.Level] : "level (resumed)" };
   }
 }
+
+// The parameters the search starts from (--start): paper, fixed or a table
+// file. False, with a message, when the file cannot be read.
+bool ReadStart(const std::string& start, vtkErrorDiffusionParameterTable& table)
+{
+  table = vtkErrorDiffusionParameterTable::Paper();
+  if (start == "fixed")
+  {
+    table = vtkErrorDiffusionParameterTable::Fixed();
+  }
+  else if (start != "paper")
+  {
+    std::string error;
+    if (!vtkErrorDiffusionParameterTable::ReadFile(start, table, error))
+    {
+      std::cerr << "bluenoise-optimize: " << error << "\n";
+      return false;
+    }
+  }
+  return true;
+}
+
+// The table's folder must take the file before hours of search, not after.
+bool CanWrite(const std::string& output)
+{
+  const std::string probe = output + ".partial";
+  std::ofstream test(probe, std::ios::app);
+  if (!test)
+  {
+    std::cerr << "bluenoise-optimize: cannot write " << probe << ": " << std::strerror(errno)
+              << "\n";
+    return false;
+  }
+  test.close();
+  std::remove(probe.c_str());
+  return true;
+}
+
+// The levels asked for that are not finished yet, in the order asked.
+std::vector<double> LevelsToDo(const std::vector<double>& levels, const Finished& done)
+{
+  std::vector<double> todo;
+  for (double level : levels)
+  {
+    if (!done.count(level))
+    {
+      todo.push_back(level);
+    }
+  }
+  return todo;
+}
+
+// The table's header comment: what was minimized, and with which settings.
+std::string TableHeader(const Options& o)
+{
+  const auto& settings = o.Settings;
+  std::ostringstream header;
+  header << "Optimized by bluenoise-optimize: minimum of T = w L + (1 - w) S per level\n"
+         << "cube " << settings.GridSize << "^3, seeds 0.." << settings.Seeds - 1
+         << " averaged, w = " << settings.Weight << ", Nelder-Mead budget "
+         << settings.MaximumEvaluations << " per level, start " << o.Start
+         << ", ModulationScale " << settings.ModulationScale << ", steady-state boundaries;\n"
+         << "interior: the same seeds with the faces cropped by " << settings.CropFaces
+         << " voxels";
+  return header.str();
+}
+
+// The levels to do, searched by a pool of threads: each thread takes the next
+// level nobody has taken yet, and a finished level is added to the table and
+// the table written at once, so that a run stopped early keeps what it found
+// (--resume goes on from there).
+class Search
+{
+public:
+  Search(const Options& o, const vtkErrorDiffusionParameterTable& start,
+    const std::vector<double>& todo, const std::string& header, Finished& done)
+    : Settings(o.Settings)
+    , Output(o.Output)
+    , Start(start)
+    , Todo(todo)
+    , Header(header)
+    , Done(done)
+  {
+  }
+
+  void Run(unsigned threads)
+  {
+    std::vector<std::thread> pool;
+    for (unsigned t = 0; t < std::min<size_t>(threads, this->Todo.size()); ++t)
+    {
+      pool.emplace_back([this]() { this->Work(); });
+    }
+    for (auto& t : pool)
+    {
+      t.join();
+    }
+  }
+
+private:
+  // One thread: the next level not taken, until there is none.
+  void Work()
+  {
+    for (size_t i = this->Next++; i < this->Todo.size(); i = this->Next++)
+    {
+      const double level = this->Todo[i];
+      const LevelResult result = this->Optimize(level);
+      vtkErrorDiffusionOptimizer::Evaluation interior;
+      vtkErrorDiffusionOptimizer::Evaluate(
+        vtkErrorDiffusionOptimizer::SingleKeyTable(result.Optimized, level), level,
+        this->Settings, interior, true);
+      this->Finish(level, result, interior.Interior);
+    }
+  }
+
+  // The search at one level from the start table's parameters there, with a
+  // progress line every 50 evaluations.
+  LevelResult Optimize(double level)
+  {
+    const auto& settings = this->Settings;
+    const Key from = vtkErrorDiffusionOptimizer::KeyAt(this->Start, level);
+    int lastReport = 0;
+    return vtkErrorDiffusionOptimizer::OptimizeLevel(
+      level, from, settings, [&](int evaluations, double best) {
+        if (evaluations - lastReport >= 50)
+        {
+          lastReport = evaluations;
+          std::lock_guard<std::mutex> guard(this->Lock);
+          std::cout << "level " << level << ": " << evaluations << "/"
+                    << settings.MaximumEvaluations << " evaluations, best T " << best
+                    << std::endl;
+        }
+      });
+  }
+
+  // Adds a finished level to the table and writes the table, one thread at a time.
+  void Finish(double level, const LevelResult& result,
+    const vtkErrorDiffusionOptimizer::Metrics& interior)
+  {
+    std::lock_guard<std::mutex> guard(this->Lock);
+    this->Done[level] = { result.Optimized, Comment(result, interior) };
+    const double seconds =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - this->Begin).count();
+    std::cout << this->Done[level].second << " [" << seconds << " s]" << std::endl;
+    if (!WriteTable(this->Output, this->Done, this->Header))
+    {
+      std::cerr << "bluenoise-optimize: cannot write " << this->Output << ": "
+                << std::strerror(errno) << "\n";
+    }
+  }
+
+  const vtkErrorDiffusionOptimizer::Settings& Settings;
+  const std::string& Output;
+  const vtkErrorDiffusionParameterTable& Start;
+  const std::vector<double>& Todo;
+  const std::string& Header;
+  Finished& Done;
+  std::mutex Lock; // stdout and Done
+  std::atomic<size_t> Next{ 0 };
+  const std::chrono::steady_clock::time_point Begin = std::chrono::steady_clock::now();
+};
 }
 
 int main(int argc, char* argv[])
@@ -139,113 +300,25 @@ int main(int argc, char* argv[])
   {
     return parsed;
   }
-  const std::string& output = o.Output;
-  const std::string& start = o.Start;
-  const auto& settings = o.Settings;
-  const unsigned threads = static_cast<unsigned>(o.Threads);
-  const std::vector<double>& levels = o.Levels;
-
-  vtkErrorDiffusionParameterTable startTable = vtkErrorDiffusionParameterTable::Paper();
-  if (start == "fixed")
+  vtkErrorDiffusionParameterTable start;
+  if (!ReadStart(o.Start, start) || !CanWrite(o.Output))
   {
-    startTable = vtkErrorDiffusionParameterTable::Fixed();
+    return 1;
   }
-  else if (start != "paper")
-  {
-    std::string error;
-    if (!vtkErrorDiffusionParameterTable::ReadFile(start, startTable, error))
-    {
-      std::cerr << "bluenoise-optimize: " << error << "\n";
-      return 1;
-    }
-  }
-
-  // The table's folder must take the file before hours of search, not after.
-  {
-    const std::string probe = output + ".partial";
-    std::ofstream test(probe, std::ios::app);
-    if (!test)
-    {
-      std::cerr << "bluenoise-optimize: cannot write " << probe << ": " << std::strerror(errno)
-                << "\n";
-      return 1;
-    }
-    test.close();
-    std::remove(probe.c_str());
-  }
-
-  std::map<double, std::pair<Key, std::string>> done;
+  Finished done;
   if (o.Resume)
   {
-    ReadDone(output, done);
-    std::cout << "resuming: " << done.size() << " level(s) already in " << output << std::endl;
+    ReadDone(o.Output, done);
+    std::cout << "resuming: " << done.size() << " level(s) already in " << o.Output << std::endl;
   }
-  std::vector<double> todo;
-  for (double level : levels)
-  {
-    if (!done.count(level))
-    {
-      todo.push_back(level);
-    }
-  }
-  std::ostringstream header;
-  header << "Optimized by bluenoise-optimize: minimum of T = w L + (1 - w) S per level\n"
-         << "cube " << settings.GridSize << "^3, seeds 0.." << settings.Seeds - 1
-         << " averaged, w = " << settings.Weight << ", Nelder-Mead budget "
-         << settings.MaximumEvaluations << " per level, start " << start
-         << ", ModulationScale " << settings.ModulationScale << ", steady-state boundaries;\n"
-         << "interior: the same seeds with the faces cropped by " << settings.CropFaces
-         << " voxels";
-
-  std::mutex lock;
-  std::atomic<size_t> next{ 0 };
-  const auto begin = std::chrono::steady_clock::now();
-  auto worker = [&]() {
-    for (size_t i = next++; i < todo.size(); i = next++)
-    {
-      const double level = todo[i];
-      const Key from = vtkErrorDiffusionOptimizer::KeyAt(startTable, level);
-      int lastReport = 0;
-      const auto result = vtkErrorDiffusionOptimizer::OptimizeLevel(
-        level, from, settings, [&](int evaluations, double best) {
-          if (evaluations - lastReport >= 50)
-          {
-            lastReport = evaluations;
-            std::lock_guard<std::mutex> guard(lock);
-            std::cout << "level " << level << ": " << evaluations << "/"
-                      << settings.MaximumEvaluations << " evaluations, best T " << best
-                      << std::endl;
-          }
-        });
-      vtkErrorDiffusionOptimizer::Evaluation interior;
-      vtkErrorDiffusionOptimizer::Evaluate(
-        vtkErrorDiffusionOptimizer::SingleKeyTable(result.Optimized, level), level, settings,
-        interior, true);
-      std::lock_guard<std::mutex> guard(lock);
-      done[level] = { result.Optimized, Comment(result, interior.Interior) };
-      const double seconds =
-        std::chrono::duration<double>(std::chrono::steady_clock::now() - begin).count();
-      std::cout << done[level].second << " [" << seconds << " s]" << std::endl;
-      if (!WriteTable(output, done, header.str()))
-      {
-        std::cerr << "bluenoise-optimize: cannot write " << output << ": "
-                  << std::strerror(errno) << "\n";
-      }
-    }
-  };
-  std::vector<std::thread> pool;
-  for (unsigned t = 0; t < std::min<size_t>(threads, todo.size()); ++t)
-  {
-    pool.emplace_back(worker);
-  }
-  for (auto& t : pool)
-  {
-    t.join();
-  }
+  const std::vector<double> todo = LevelsToDo(o.Levels, done);
+  const std::string header = TableHeader(o);
+  Search search(o, start, todo, header, done);
+  search.Run(static_cast<unsigned>(o.Threads));
   if (todo.empty() && !done.empty())
   {
-    WriteTable(output, done, header.str());
+    WriteTable(o.Output, done, header);
   }
-  std::cout << "table: " << output << " (" << done.size() << " levels)" << std::endl;
+  std::cout << "table: " << o.Output << " (" << done.size() << " levels)" << std::endl;
   return done.empty() ? 1 : 0;
 }

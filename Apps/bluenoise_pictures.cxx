@@ -179,18 +179,29 @@ vtkSmartPointer<vtkActor> PointsActor(
   return actor;
 }
 
+// The color of every caption and label on the samples picture.
+const double Ink[3] = { 0.12, 0.12, 0.15 };
+
+// Text whose top edge is at y and whose left edge (VTK_TEXT_LEFT) or middle
+// (VTK_TEXT_CENTERED) is at x, in normalized viewport coordinates.
+vtkSmartPointer<vtkTextActor> Text(const std::string& text, int size, const double rgb[3],
+  int justification, double x, double y)
+{
+  auto actor = vtkSmartPointer<vtkTextActor>::New();
+  actor->SetInput(text.c_str());
+  actor->GetTextProperty()->SetFontSize(size);
+  actor->GetTextProperty()->SetColor(rgb[0], rgb[1], rgb[2]);
+  actor->GetTextProperty()->SetJustification(justification);
+  actor->GetTextProperty()->SetVerticalJustification(VTK_TEXT_TOP);
+  actor->GetPositionCoordinate()->SetCoordinateSystemToNormalizedViewport();
+  actor->GetPositionCoordinate()->SetValue(x, y);
+  return actor;
+}
+
 // Text whose top left corner is at (x, y) in normalized viewport coordinates.
 vtkSmartPointer<vtkTextActor> Caption(const std::string& text, int size, double x, double y)
 {
-  auto caption = vtkSmartPointer<vtkTextActor>::New();
-  caption->SetInput(text.c_str());
-  caption->GetTextProperty()->SetFontSize(size);
-  caption->GetTextProperty()->SetColor(0.12, 0.12, 0.15);
-  caption->GetTextProperty()->SetJustification(VTK_TEXT_LEFT);
-  caption->GetTextProperty()->SetVerticalJustification(VTK_TEXT_TOP);
-  caption->GetPositionCoordinate()->SetCoordinateSystemToNormalizedViewport();
-  caption->GetPositionCoordinate()->SetValue(x, y);
-  return caption;
+  return Text(text, size, Ink, VTK_TEXT_LEFT, x, y);
 }
 
 // Renders `window` (already populated) and writes it as a PNG.
@@ -289,6 +300,315 @@ void StyleChart(vtkChartXY* chart, const std::string& title, const char* yTitle,
   chart->GetLegend()->GetLabelProperties()->SetFontSize(14);
   chart->GetLegend()->SetLabelSize(14);
 }
+
+// ---------------------------------------------------------------------------
+// The steps of WriteSamplesPicture.
+
+// The array to color the samples by: `name` when the points carry it with one
+// component, else Density; null when neither is there.
+vtkDataArray* ColorsOf(vtkPolyData* samples, const std::string& name)
+{
+  vtkDataArray* colors = nullptr;
+  if (!name.empty())
+  {
+    colors = samples->GetPointData()->GetArray(name.c_str());
+  }
+  if (!colors || colors->GetNumberOfComponents() != 1)
+  {
+    colors = samples->GetPointData()->GetArray("Density");
+  }
+  return colors;
+}
+
+// The color map over the values of `colors`; a constant array gets a range of
+// one so that the map does not collapse to a single entry.
+vtkSmartPointer<vtkLookupTable> ColorMapOf(vtkDataArray* colors)
+{
+  double range[2];
+  colors->GetRange(range, 0);
+  if (!(range[1] > range[0]))
+  {
+    range[1] = range[0] + 1.0;
+  }
+  return MakeColorMap(range);
+}
+
+// Where the samples picture puts things: the 3D view takes the left `Split`
+// of the width, the two slabs share the rest, one above the other, all framed
+// on the point cloud's bounding box.
+struct CloudLayout
+{
+  CloudLayout(vtkPolyData* samples, const bluenoise::SamplesPicture& options)
+  {
+    double bounds[6];
+    samples->GetBounds(bounds);
+    for (int c = 0; c < 3; ++c)
+    {
+      this->Center[c] = 0.5 * (bounds[2 * c] + bounds[2 * c + 1]);
+      this->Size[c] = bounds[2 * c + 1] - bounds[2 * c];
+    }
+    this->Half = 0.5 * std::max(options.SlabThickness, 1e-12);
+    this->SlabAspect = ((1.0 - Split) * options.Width) / (0.5 * options.Height);
+  }
+  static constexpr double Split = 0.62;
+  double Center[3];
+  double Size[3];
+  double Half;       // half the slab thickness
+  double SlabAspect; // width over height of a slab's viewport
+};
+
+// Left: every point in 3D, seen from -x, a little from +y and from above
+// (for a brain in RAS orientation such as the MNI templates: from the left,
+// slightly from the front, z up).
+vtkSmartPointer<vtkRenderer> WholeView(vtkPolyData* samples, vtkDataArray* colors,
+  vtkLookupTable* lut, const CloudLayout& layout)
+{
+  auto whole = vtkSmartPointer<vtkRenderer>::New();
+  whole->SetViewport(0.0, 0.0, CloudLayout::Split, 1.0);
+  whole->SetBackground(1.0, 1.0, 1.0);
+  whole->AddActor(PointsActor(samples, colors->GetName(), lut, 2.5));
+  whole->UseFXAAOn();
+  const double* center = layout.Center;
+  vtkCamera* camera = whole->GetActiveCamera();
+  camera->SetFocalPoint(center);
+  camera->SetPosition(center[0] - 1.0, center[1] + 0.45, center[2] + 0.35);
+  camera->SetViewUp(0.0, 0.0, 1.0);
+  whole->ResetCamera();
+  camera->Zoom(1.15);
+  whole->ResetCameraClippingRange();
+  return whole;
+}
+
+// The caption of the 3D view: the input's name, how many points, what colors them.
+std::string SamplesCaption(const bluenoise::SamplesPicture& options, vtkPolyData* samples,
+  const std::string& colorTitle)
+{
+  const std::string count = std::to_string(samples->GetNumberOfPoints());
+  std::string caption = options.Caption.empty() ? "" : options.Caption + "\n";
+  caption += count + " blue-noise samples, colored by " +
+    (colorTitle == "Density" ? "the density they were drawn with"
+                             : "the input array " + colorTitle);
+  return caption;
+}
+
+void StyleBarText(vtkTextProperty* text, int size)
+{
+  text->SetFontSize(size);
+  text->SetColor(Ink[0], Ink[1], Ink[2]);
+  text->ItalicOff();
+  text->ShadowOff();
+}
+
+// The color bar at the right edge of the 3D view.
+vtkSmartPointer<vtkScalarBarActor> ColorBar(vtkLookupTable* lut, const std::string& title)
+{
+  auto bar = vtkSmartPointer<vtkScalarBarActor>::New();
+  bar->SetLookupTable(lut);
+  bar->SetTitle(title.c_str());
+  bar->SetNumberOfLabels(5);
+  bar->SetLabelFormat("%.3g");
+  bar->SetOrientationToVertical();
+  bar->UnconstrainedFontSizeOn();
+  StyleBarText(bar->GetTitleTextProperty(), 15);
+  StyleBarText(bar->GetLabelTextProperty(), 13);
+  bar->GetPositionCoordinate()->SetCoordinateSystemToNormalizedViewport();
+  bar->GetPositionCoordinate()->SetValue(0.87, 0.2);
+  bar->SetWidth(0.12);
+  bar->SetHeight(0.6);
+  bar->SetBarRatio(0.3);
+  return bar;
+}
+
+// Right: an axial (z) and a sagittal (x) slab through the center, head-on.
+struct SlabView
+{
+  int Axis;
+  const char* Name;
+  double ViewportY0;
+  int Up;
+};
+const SlabView SlabViews[2] = { { 2, "axial", 0.5, 1 }, { 0, "sagittal", 0.0, 2 } };
+
+std::string SlabCaption(const SlabView& v, const CloudLayout& layout, vtkIdType points)
+{
+  const char axis = "xyz"[v.Axis];
+  return std::string(v.Name) + " slab " + axis + " = " + Format("%.4g", layout.Center[v.Axis]) +
+    " \xC2\xB1 " + Format("%.3g", layout.Half) + ", seen from " + (v.Axis == 2 ? "+" : "-") +
+    axis + " (" + std::to_string(points) + " points)";
+}
+
+vtkSmartPointer<vtkRenderer> SlabRenderer(vtkPolyData* samples, vtkDataArray* colors,
+  vtkLookupTable* lut, const CloudLayout& layout, const SlabView& v)
+{
+  const double* center = layout.Center;
+  const double* size = layout.Size;
+  auto slab = Slab(samples, colors, v.Axis, center[v.Axis], layout.Half);
+  auto renderer = vtkSmartPointer<vtkRenderer>::New();
+  renderer->SetViewport(CloudLayout::Split, v.ViewportY0, 1.0, v.ViewportY0 + 0.5);
+  renderer->SetBackground(0.95, 0.95, 0.96);
+  renderer->AddActor(PointsActor(slab, colors->GetName(), lut, 4.0));
+  renderer->UseFXAAOn();
+  vtkCamera* c = renderer->GetActiveCamera();
+  c->ParallelProjectionOn();
+  c->SetFocalPoint(center);
+  // Axial: from above; sagittal: from the left side, anterior to the left.
+  const double depth = std::max({ size[0], size[1], size[2], 1.0 });
+  double position[3] = { center[0], center[1], center[2] };
+  position[v.Axis] += v.Axis == 2 ? depth : -depth;
+  c->SetPosition(position);
+  double up[3] = { 0.0, 0.0, 0.0 };
+  up[v.Up] = 1.0;
+  c->SetViewUp(up);
+  // Fit the in-plane extent of the whole cloud (same scale for every slab).
+  int across = 3 - v.Axis - v.Up;
+  c->SetParallelScale(0.5 * 1.25 * std::max(size[v.Up], size[across] / layout.SlabAspect));
+  renderer->ResetCameraClippingRange();
+  renderer->AddViewProp(Caption(SlabCaption(v, layout, slab->GetNumberOfPoints()), 15, 0.03, 0.97));
+  return renderer;
+}
+
+// ---------------------------------------------------------------------------
+// The steps of WriteSpectrumPlot.
+
+const unsigned char Blue[3] = { 31, 90, 180 };
+const unsigned char Orange[3] = { 214, 100, 20 };
+const unsigned char Red[3] = { 200, 30, 45 };
+const unsigned char Gray[3] = { 120, 120, 120 };
+
+vtkDataArray* NumericColumn(vtkTable* table, const char* name)
+{
+  return table ? vtkDataArray::SafeDownCast(table->GetColumnByName(name)) : nullptr;
+}
+
+// The curves to plot, and the ranges of the axes.
+struct SpectrumCurves
+{
+  vtkNew<vtkTable> Power;      // f, power
+  vtkNew<vtkTable> Anisotropy; // f, dB
+  double FMax = 0.0, PMax = 0.0, AMin = 0.0, AMax = 0.0;
+};
+
+// The curves, without shells whose anisotropy is undefined (floored at
+// -300 dB: fewer than two samples, or no power). The axis ranges leave out
+// the few sparse shells near the corner frequency (beyond f = 0.5 the
+// shells are only partly inside the spectrum; their estimates scatter
+// widely and would flatten the rest); their curves are clipped instead.
+// False when the table lacks a column the plot needs.
+bool ReadCurves(vtkTable* spectrum, SpectrumCurves& curves)
+{
+  vtkDataArray* frequency = NumericColumn(spectrum, "Frequency");
+  vtkDataArray* power = NumericColumn(spectrum, "RadialPower");
+  vtkDataArray* anisotropy = NumericColumn(spectrum, "AnisotropyDB");
+  vtkDataArray* counts = NumericColumn(spectrum, "ShellCount");
+  if (!frequency || !power || !anisotropy || spectrum->GetNumberOfRows() < 2)
+  {
+    return false;
+  }
+  std::vector<double> f, p, fa, a;
+  for (vtkIdType i = 0; i < spectrum->GetNumberOfRows(); ++i)
+  {
+    f.push_back(frequency->GetComponent(i, 0));
+    p.push_back(power->GetComponent(i, 0));
+    const bool dense = f.back() <= 0.5 || !counts || counts->GetComponent(i, 0) >= 500.0;
+    if (dense)
+    {
+      curves.PMax = std::max(curves.PMax, p.back());
+    }
+    const double db = anisotropy->GetComponent(i, 0);
+    if (db > -299.0)
+    {
+      fa.push_back(f.back());
+      a.push_back(db);
+      if (dense)
+      {
+        curves.AMin = std::min(curves.AMin, db);
+        curves.AMax = std::max(curves.AMax, db);
+      }
+    }
+  }
+  curves.FMax = f.back();
+  curves.Power->AddColumn(Column("f", f));
+  curves.Power->AddColumn(Column("power", p));
+  curves.Anisotropy->AddColumn(Column("f", fa));
+  curves.Anisotropy->AddColumn(Column("dB", a));
+  return true;
+}
+
+// A dashed marker line from (x0, y0) to (x1, y1); the plot keeps its table
+// (through the plot's input), so the table needs no owner here.
+void AddMarker(vtkChartXY* chart, double x0, double y0, double x1, double y1,
+  const std::string& label, const unsigned char rgb[3])
+{
+  AddLine(chart, Segment(x0, y0, x1, y1), "x", "y", label.c_str(), rgb, 1.5f, vtkPen::DASH_LINE);
+}
+
+// Both charts get the same axes rectangle within their half of a `width`
+// wide view (the axes, not the labels, are placed), so their frequency axes
+// line up.
+vtkRectf AxesRect(float width, float bottom, float height)
+{
+  const float left = 85.0f, right = 25.0f, below = 52.0f, above = 32.0f;
+  return vtkRectf(left, bottom + below, width - left - right, height - below - above);
+}
+
+// Puts `chart` into `view` with its axes on `axes` and its legend at the bottom right.
+void PlaceChart(vtkContextView* view, vtkChartXY* chart, const vtkRectf& axes)
+{
+  chart->GetLegend()->SetHorizontalAlignment(vtkChartLegend::RIGHT);
+  chart->GetLegend()->SetVerticalAlignment(vtkChartLegend::BOTTOM);
+  chart->SetLayoutStrategy(vtkChart::AXES_TO_RECT);
+  chart->SetSize(axes);
+  view->GetScene()->AddItem(chart);
+}
+
+// Top: radially averaged power, with the white-noise level 1 - g and f_g.
+void AddPowerChart(vtkContextView* view, const SpectrumCurves& curves, double g, double fg,
+  const vtkRectf& axes)
+{
+  vtkNew<vtkChartXY> chart;
+  const double fMax = curves.FMax;
+  const double pTop = 1.12 * std::max(curves.PMax, std::isfinite(g) ? 1.0 - g : 0.0);
+  StyleChart(chart, "Radially averaged power spectrum", "power P(f)", fMax, 0.0, pTop);
+  AddLine(chart, curves.Power, "f", "power", "RadialPower", Blue, 2.5f, vtkPen::SOLID_LINE);
+  if (std::isfinite(g))
+  {
+    AddMarker(chart, 0.0, 1.0 - g, fMax, 1.0 - g, "white noise 1 - g = " + Format("%.3f", 1.0 - g),
+      Gray);
+  }
+  if (std::isfinite(fg) && fg > 0.0)
+  {
+    AddMarker(chart, fg, 0.0, fg, pTop, "principal frequency f_g = " + Format("%.3f", fg), Red);
+  }
+  PlaceChart(view, chart, axes);
+}
+
+// Bottom: anisotropy in dB, with the 0 dB line and f_g.
+void AddAnisotropyChart(vtkContextView* view, const SpectrumCurves& curves, double fg,
+  const vtkRectf& axes)
+{
+  vtkNew<vtkChartXY> chart;
+  const double fMax = curves.FMax;
+  const double aLow = std::floor(curves.AMin - 1.0), aHigh = std::ceil(curves.AMax + 1.0);
+  StyleChart(chart, "Anisotropy (one realization: isotropic noise is about 0 dB)",
+    "anisotropy (dB)", fMax, aLow, aHigh);
+  AddLine(chart, curves.Anisotropy, "f", "dB", "Anisotropy (dB)", Orange, 2.0f,
+    vtkPen::SOLID_LINE);
+  AddMarker(chart, 0.0, 0.0, fMax, 0.0, "0 dB", Gray);
+  if (std::isfinite(fg) && fg > 0.0)
+  {
+    AddMarker(chart, fg, aLow, fg, aHigh, "f_g", Red);
+  }
+  PlaceChart(view, chart, axes);
+}
+
+// The overall title: the caller's, then the scalar metrics.
+std::string PlotTitle(vtkTable* spectrum, const std::string& title)
+{
+  std::string metrics = "L(g) = " + Format("%.4f", FieldValue(spectrum, "LowFrequencyRatio")) +
+    "   S(g) = " + Format("%.4f", FieldValue(spectrum, "Symmetry")) +
+    "   T(g) = " + Format("%.4f", FieldValue(spectrum, "TargetValue"));
+  return title.empty() ? metrics : title + "\n" + metrics;
+}
 }
 
 namespace bluenoise
@@ -378,127 +698,26 @@ bool WriteSamplesPicture(const PictureSession& session, vtkPolyData* samples,
     error = "no points to render";
     return false;
   }
-  vtkDataArray* colors = nullptr;
-  if (!options.ColorArray.empty())
-  {
-    colors = samples->GetPointData()->GetArray(options.ColorArray.c_str());
-  }
-  if (!colors || colors->GetNumberOfComponents() != 1)
-  {
-    colors = samples->GetPointData()->GetArray("Density");
-  }
+  vtkDataArray* colors = ColorsOf(samples, options.ColorArray);
   if (!colors || !colors->GetName())
   {
     error = "the points carry no array to color by";
     return false;
   }
-  double range[2];
-  colors->GetRange(range, 0);
-  if (!(range[1] > range[0]))
-  {
-    range[1] = range[0] + 1.0;
-  }
-  auto lut = MakeColorMap(range);
+  auto lut = ColorMapOf(colors);
   const std::string colorTitle = colors->GetName();
-
-  double bounds[6];
-  samples->GetBounds(bounds);
-  const double center[3] = { 0.5 * (bounds[0] + bounds[1]), 0.5 * (bounds[2] + bounds[3]),
-    0.5 * (bounds[4] + bounds[5]) };
-  const double size[3] = { bounds[1] - bounds[0], bounds[3] - bounds[2], bounds[5] - bounds[4] };
-  const double half = 0.5 * std::max(options.SlabThickness, 1e-12);
+  const CloudLayout layout(samples, options);
 
   vtkNew<vtkRenderWindow> window;
   vtkNew<ErrorCollector> errors;
   PrepareOffScreen(session, window, errors, options.Width, options.Height);
-
-  // Left: every point in 3D, seen from -x, a little from +y and from above
-  // (for a brain in RAS orientation such as the MNI templates: from the left,
-  // slightly from the front, z up).
-  const double split = 0.62;
-  vtkNew<vtkRenderer> whole;
-  whole->SetViewport(0.0, 0.0, split, 1.0);
-  whole->SetBackground(1.0, 1.0, 1.0);
-  whole->AddActor(PointsActor(samples, colors->GetName(), lut, 2.5));
-  whole->UseFXAAOn();
-  vtkCamera* camera = whole->GetActiveCamera();
-  camera->SetFocalPoint(center);
-  camera->SetPosition(center[0] - 1.0, center[1] + 0.45, center[2] + 0.35);
-  camera->SetViewUp(0.0, 0.0, 1.0);
-  whole->ResetCamera();
-  camera->Zoom(1.15);
-  whole->ResetCameraClippingRange();
+  auto whole = WholeView(samples, colors, lut, layout);
   window->AddRenderer(whole);
-
-  const std::string count = std::to_string(samples->GetNumberOfPoints());
-  std::string caption = options.Caption.empty() ? "" : options.Caption + "\n";
-  caption += count + " blue-noise samples, colored by " +
-    (colorTitle == "Density" ? "the density they were drawn with"
-                             : "the input array " + colorTitle);
-  whole->AddViewProp(Caption(caption, 18, 0.02, 0.98));
-  vtkNew<vtkScalarBarActor> bar;
-  bar->SetLookupTable(lut);
-  bar->SetTitle(colorTitle.c_str());
-  bar->SetNumberOfLabels(5);
-  bar->SetLabelFormat("%.3g");
-  bar->SetOrientationToVertical();
-  bar->UnconstrainedFontSizeOn();
-  bar->GetTitleTextProperty()->SetFontSize(15);
-  bar->GetTitleTextProperty()->SetColor(0.12, 0.12, 0.15);
-  bar->GetTitleTextProperty()->ItalicOff();
-  bar->GetTitleTextProperty()->ShadowOff();
-  bar->GetLabelTextProperty()->SetFontSize(13);
-  bar->GetLabelTextProperty()->SetColor(0.12, 0.12, 0.15);
-  bar->GetLabelTextProperty()->ItalicOff();
-  bar->GetLabelTextProperty()->ShadowOff();
-  bar->GetPositionCoordinate()->SetCoordinateSystemToNormalizedViewport();
-  bar->GetPositionCoordinate()->SetValue(0.87, 0.2);
-  bar->SetWidth(0.12);
-  bar->SetHeight(0.6);
-  bar->SetBarRatio(0.3);
-  whole->AddViewProp(bar);
-
-  // Right: an axial (z) and a sagittal (x) slab through the center, head-on.
-  struct SlabView
+  whole->AddViewProp(Caption(SamplesCaption(options, samples, colorTitle), 18, 0.02, 0.98));
+  whole->AddViewProp(ColorBar(lut, colorTitle));
+  for (const SlabView& v : SlabViews)
   {
-    int Axis;
-    const char* Name;
-    double ViewportY0;
-    int Up;
-  };
-  const SlabView views[2] = { { 2, "axial", 0.5, 1 }, { 0, "sagittal", 0.0, 2 } };
-  for (const SlabView& v : views)
-  {
-    auto slab = Slab(samples, colors, v.Axis, center[v.Axis], half);
-    vtkNew<vtkRenderer> renderer;
-    renderer->SetViewport(split, v.ViewportY0, 1.0, v.ViewportY0 + 0.5);
-    renderer->SetBackground(0.95, 0.95, 0.96);
-    renderer->AddActor(PointsActor(slab, colors->GetName(), lut, 4.0));
-    renderer->UseFXAAOn();
-    vtkCamera* c = renderer->GetActiveCamera();
-    c->ParallelProjectionOn();
-    c->SetFocalPoint(center);
-    // Axial: from above; sagittal: from the left side, anterior to the left.
-    const double depth = std::max({ size[0], size[1], size[2], 1.0 });
-    double position[3] = { center[0], center[1], center[2] };
-    position[v.Axis] += v.Axis == 2 ? depth : -depth;
-    c->SetPosition(position);
-    double up[3] = { 0.0, 0.0, 0.0 };
-    up[v.Up] = 1.0;
-    c->SetViewUp(up);
-    // Fit the in-plane extent of the whole cloud (same scale for every slab).
-    int across = 3 - v.Axis - v.Up;
-    const double viewportAspect =
-      ((1.0 - split) * options.Width) / (0.5 * options.Height);
-    c->SetParallelScale(0.5 * 1.25 * std::max(size[v.Up], size[across] / viewportAspect));
-    renderer->ResetCameraClippingRange();
-    const char axis = "xyz"[v.Axis];
-    const std::string text = std::string(v.Name) + " slab " + axis + " = " +
-      Format("%.4g", center[v.Axis]) + " \xC2\xB1 " + Format("%.3g", half) + ", seen from " +
-      (v.Axis == 2 ? "+" : "-") + axis + " (" + std::to_string(slab->GetNumberOfPoints()) +
-      " points)";
-    renderer->AddViewProp(Caption(text, 15, 0.03, 0.97));
-    window->AddRenderer(renderer);
+    window->AddRenderer(SlabRenderer(samples, colors, lut, layout, v));
   }
   return Capture(window, errors, png, error);
 }
@@ -506,63 +725,14 @@ bool WriteSamplesPicture(const PictureSession& session, vtkPolyData* samples,
 bool WriteSpectrumPlot(const PictureSession& session, vtkTable* spectrum,
   const SpectrumPlot& options, const std::string& png, std::string& error)
 {
-  vtkDataArray* frequency =
-    spectrum ? vtkDataArray::SafeDownCast(spectrum->GetColumnByName("Frequency")) : nullptr;
-  vtkDataArray* power =
-    spectrum ? vtkDataArray::SafeDownCast(spectrum->GetColumnByName("RadialPower")) : nullptr;
-  vtkDataArray* anisotropy =
-    spectrum ? vtkDataArray::SafeDownCast(spectrum->GetColumnByName("AnisotropyDB")) : nullptr;
-  vtkDataArray* counts =
-    spectrum ? vtkDataArray::SafeDownCast(spectrum->GetColumnByName("ShellCount")) : nullptr;
-  if (!frequency || !power || !anisotropy || spectrum->GetNumberOfRows() < 2)
+  SpectrumCurves curves;
+  if (!ReadCurves(spectrum, curves))
   {
     error = "the spectrum table lacks Frequency, RadialPower or AnisotropyDB";
     return false;
   }
-  const vtkIdType rows = spectrum->GetNumberOfRows();
   const double g = FieldValue(spectrum, "Density");
   const double fg = FieldValue(spectrum, "PrincipalFrequency");
-
-  // The curves, without shells whose anisotropy is undefined (floored at
-  // -300 dB: fewer than two samples, or no power). The axis ranges leave out
-  // the few sparse shells near the corner frequency (beyond f = 0.5 the
-  // shells are only partly inside the spectrum; their estimates scatter
-  // widely and would flatten the rest); their curves are clipped instead.
-  std::vector<double> f, p, fa, a;
-  double pMax = 0.0, aMin = 0.0, aMax = 0.0;
-  for (vtkIdType i = 0; i < rows; ++i)
-  {
-    f.push_back(frequency->GetComponent(i, 0));
-    p.push_back(power->GetComponent(i, 0));
-    const bool dense = f.back() <= 0.5 || !counts || counts->GetComponent(i, 0) >= 500.0;
-    if (dense)
-    {
-      pMax = std::max(pMax, p.back());
-    }
-    const double db = anisotropy->GetComponent(i, 0);
-    if (db > -299.0)
-    {
-      fa.push_back(f.back());
-      a.push_back(db);
-      if (dense)
-      {
-        aMin = std::min(aMin, db);
-        aMax = std::max(aMax, db);
-      }
-    }
-  }
-  const double fMax = f.back();
-  vtkNew<vtkTable> powerTable;
-  powerTable->AddColumn(Column("f", f));
-  powerTable->AddColumn(Column("power", p));
-  vtkNew<vtkTable> anisotropyTable;
-  anisotropyTable->AddColumn(Column("f", fa));
-  anisotropyTable->AddColumn(Column("dB", a));
-
-  const unsigned char blue[3] = { 31, 90, 180 };
-  const unsigned char orange[3] = { 214, 100, 20 };
-  const unsigned char red[3] = { 200, 30, 45 };
-  const unsigned char gray[3] = { 120, 120, 120 };
 
   vtkNew<vtkContextView> view;
   vtkRenderWindow* window = view->GetRenderWindow();
@@ -570,74 +740,16 @@ bool WriteSpectrumPlot(const PictureSession& session, vtkTable* spectrum,
   PrepareOffScreen(session, window, errors, options.Width, options.Height);
   view->GetRenderer()->SetBackground(1.0, 1.0, 1.0);
 
+  // The charts share the height below the title, the power chart on top.
   const float w = static_cast<float>(options.Width);
   const float h = static_cast<float>(options.Height);
   const float titleSpace = 58.0f;
   const float top = h - titleSpace;
-  // Both charts get the same axes rectangle within their half (the axes, not
-  // the labels, are placed), so their frequency axes line up.
-  auto AxesRect = [w](float bottom, float height) {
-    const float left = 85.0f, right = 25.0f, below = 52.0f, above = 32.0f;
-    return vtkRectf(left, bottom + below, w - left - right, height - below - above);
-  };
-
-  // Top: radially averaged power.
-  vtkNew<vtkChartXY> powerChart;
-  const double pTop = 1.12 * std::max(pMax, std::isfinite(g) ? 1.0 - g : 0.0);
-  StyleChart(powerChart, "Radially averaged power spectrum", "power P(f)", fMax, 0.0, pTop);
-  AddLine(powerChart, powerTable, "f", "power", "RadialPower", blue, 2.5f, vtkPen::SOLID_LINE);
-  vtkSmartPointer<vtkTable> whiteLevel, powerMark;
-  if (std::isfinite(g))
-  {
-    whiteLevel = Segment(0.0, 1.0 - g, fMax, 1.0 - g);
-    AddLine(powerChart, whiteLevel, "x", "y", ("white noise 1 - g = " + Format("%.3f", 1.0 - g)).c_str(),
-      gray, 1.5f, vtkPen::DASH_LINE);
-  }
-  if (std::isfinite(fg) && fg > 0.0)
-  {
-    powerMark = Segment(fg, 0.0, fg, pTop);
-    AddLine(powerChart, powerMark, "x", "y", ("principal frequency f_g = " + Format("%.3f", fg)).c_str(),
-      red, 1.5f, vtkPen::DASH_LINE);
-  }
-  powerChart->GetLegend()->SetHorizontalAlignment(vtkChartLegend::RIGHT);
-  powerChart->GetLegend()->SetVerticalAlignment(vtkChartLegend::BOTTOM);
-  powerChart->SetLayoutStrategy(vtkChart::AXES_TO_RECT);
-  powerChart->SetSize(AxesRect(0.5f * top, 0.5f * top));
-  view->GetScene()->AddItem(powerChart);
-
-  // Bottom: anisotropy in dB.
-  vtkNew<vtkChartXY> anisotropyChart;
-  const double aLow = std::floor(aMin - 1.0), aHigh = std::ceil(aMax + 1.0);
-  StyleChart(anisotropyChart, "Anisotropy (one realization: isotropic noise is about 0 dB)",
-    "anisotropy (dB)", fMax, aLow, aHigh);
-  AddLine(anisotropyChart, anisotropyTable, "f", "dB", "Anisotropy (dB)", orange, 2.0f,
-    vtkPen::SOLID_LINE);
-  vtkSmartPointer<vtkTable> zeroLine = Segment(0.0, 0.0, fMax, 0.0), anisotropyMark;
-  AddLine(anisotropyChart, zeroLine, "x", "y", "0 dB", gray, 1.5f, vtkPen::DASH_LINE);
-  if (std::isfinite(fg) && fg > 0.0)
-  {
-    anisotropyMark = Segment(fg, aLow, fg, aHigh);
-    AddLine(anisotropyChart, anisotropyMark, "x", "y", "f_g", red, 1.5f, vtkPen::DASH_LINE);
-  }
-  anisotropyChart->GetLegend()->SetHorizontalAlignment(vtkChartLegend::RIGHT);
-  anisotropyChart->GetLegend()->SetVerticalAlignment(vtkChartLegend::BOTTOM);
-  anisotropyChart->SetLayoutStrategy(vtkChart::AXES_TO_RECT);
-  anisotropyChart->SetSize(AxesRect(0.0f, 0.5f * top));
-  view->GetScene()->AddItem(anisotropyChart);
-
-  // Overall title and the scalar metrics.
-  std::string metrics = "L(g) = " + Format("%.4f", FieldValue(spectrum, "LowFrequencyRatio")) +
-    "   S(g) = " + Format("%.4f", FieldValue(spectrum, "Symmetry")) +
-    "   T(g) = " + Format("%.4f", FieldValue(spectrum, "TargetValue"));
-  vtkNew<vtkTextActor> title;
-  title->SetInput((options.Title.empty() ? metrics : options.Title + "\n" + metrics).c_str());
-  title->GetTextProperty()->SetFontSize(17);
-  title->GetTextProperty()->SetColor(0.1, 0.1, 0.12);
-  title->GetTextProperty()->SetJustification(VTK_TEXT_CENTERED);
-  title->GetTextProperty()->SetVerticalJustification(VTK_TEXT_TOP);
-  title->GetPositionCoordinate()->SetCoordinateSystemToNormalizedViewport();
-  title->GetPositionCoordinate()->SetValue(0.5, 1.0 - 6.0 / h);
-  view->GetRenderer()->AddViewProp(title);
+  AddPowerChart(view, curves, g, fg, AxesRect(w, 0.5f * top, 0.5f * top));
+  AddAnisotropyChart(view, curves, fg, AxesRect(w, 0.0f, 0.5f * top));
+  const double titleColor[3] = { 0.1, 0.1, 0.12 };
+  view->GetRenderer()->AddViewProp(Text(PlotTitle(spectrum, options.Title), 17, titleColor,
+    VTK_TEXT_CENTERED, 0.5, 1.0 - 6.0 / h));
 
   view->Render();
   return Capture(window, errors, png, error);

@@ -261,6 +261,14 @@ void PrintProfiles(int seed)
 struct Stats
 {
   std::vector<double> T, L, S, A;
+  // One realization's T(g), L(g), S(g) and mean anisotropy (dB).
+  void Add(double t, double l, double s, double a)
+  {
+    this->T.push_back(t);
+    this->L.push_back(l);
+    this->S.push_back(s);
+    this->A.push_back(a);
+  }
   static double Mean(const std::vector<double>& v)
   {
     double mean = 0.0;
@@ -312,11 +320,14 @@ int ParseOptions(int argc, char* argv[], Options& o)
   return cli.Parse(argc, argv);
 }
 
+using LevelStats = std::map<std::string, Stats>;
+// Per level, the figures of each method, for the summary under the table.
+using Report = std::vector<std::pair<double, LevelStats>>;
+
 // The goals under the table: `a` below `b` in the mean of `metric` (T(g) by
 // default) at every level (by more than one standard deviation, the larger of
 // the two, with `margin`).
-void PrintBelow(const std::vector<std::pair<double, std::map<std::string, Stats>>>& all,
-  const std::string& a, const std::string& b, bool margin,
+void PrintBelow(const Report& all, const std::string& a, const std::string& b, bool margin,
   std::vector<double> Stats::*metric = &Stats::T, const char* label = "T(g)")
 {
   std::ostringstream failed;
@@ -346,6 +357,141 @@ void PrintBelow(const std::vector<std::pair<double, std::map<std::string, Stats>
   }
   std::cout << "\n";
 }
+
+using NamedTables = std::vector<std::pair<std::string, vtkErrorDiffusionParameterTable>>;
+
+// The parameter sets measured with the optimizer's evaluation: Optimized (or
+// the table of --optimized), Paper and Fixed. None, after a message, when the
+// file cannot be read.
+NamedTables ParameterTables(const Options& o)
+{
+  NamedTables tables;
+  vtkErrorDiffusionParameterTable optimized = vtkErrorDiffusionParameterTable::Optimized();
+  if (!o.OptimizedFile.empty())
+  {
+    std::string error;
+    if (!vtkErrorDiffusionParameterTable::ReadFile(o.OptimizedFile, optimized, error))
+    {
+      std::cerr << "bluenoise-quality: " << error << "\n";
+      return tables;
+    }
+  }
+  tables.emplace_back("Optimized", optimized);
+  tables.emplace_back("Paper", vtkErrorDiffusionParameterTable::Paper());
+  tables.emplace_back("Fixed", vtkErrorDiffusionParameterTable::Fixed());
+  return tables;
+}
+
+void PrintTableHead(const Options& o)
+{
+  std::cout << "Whole " << o.Size << "^3 cube, " << o.Seeds << " seeds (" << o.FirstSeed << ".."
+            << o.FirstSeed + o.Seeds - 1 << "), w = " << o.Weight
+            << ", single realizations: mean ± standard deviation over the seeds. "
+               "Anisotropy: mean over shells 1.."
+            << o.Size / 2 << " in dB.\n\n";
+  std::cout << "| level | method | T(g) | L(g) | S(g) | anisotropy dB |\n"
+               "| ---: | --- | ---: | ---: | ---: | ---: |\n";
+}
+
+// Keeps a method's figures at a level for the summary and prints their row at
+// once (a long run shows its progress).
+void AddRow(LevelStats& byMethod, double level, const std::string& name, const Stats& s)
+{
+  byMethod[name] = s;
+  std::cout << "| " << level << " | " << name << " | " << Stats::Format(s.T, 4) << " | "
+            << Stats::Format(s.L, 4) << " | " << Stats::Format(s.S, 4) << " | "
+            << Stats::Format(s.A, 2) << " |\n"
+            << std::flush;
+}
+
+// A parameter table at `level`, one realization per seed, as the optimizer
+// measures it. False, with a message, when the evaluation fails.
+bool MeasureTable(const vtkErrorDiffusionParameterTable& table, double level, const Options& o,
+  Stats& s)
+{
+  vtkErrorDiffusionOptimizer::Settings settings;
+  settings.GridSize = o.Size;
+  settings.Seeds = 1;
+  settings.Weight = o.Weight;
+  for (int k = 0; k < o.Seeds; ++k)
+  {
+    settings.FirstSeed = o.FirstSeed + k;
+    vtkErrorDiffusionOptimizer::Evaluation e;
+    std::string error;
+    if (!vtkErrorDiffusionOptimizer::Evaluate(table, level, settings, e, false, &error))
+    {
+      std::cerr << "bluenoise-quality: " << error << "\n";
+      return false;
+    }
+    s.Add(e.Whole.Target, e.Whole.LowFrequencyRatio, e.Whole.Symmetry, e.Whole.AnisotropyDB);
+  }
+  return true;
+}
+
+// The spectrum figures of one sample mask of the L^3 cube, added to `s`.
+void MeasureMask(const std::vector<unsigned char>& mask, const Options& o, Stats& s)
+{
+  const int dims[3] = { o.Size, o.Size, o.Size };
+  vtkBlueNoiseSpectrumKernel::Result r;
+  std::string error;
+  if (!vtkBlueNoiseSpectrumKernel::Evaluate(mask.data(), dims, o.Weight, r, &error))
+  {
+    std::cerr << "bluenoise-quality: " << error << "\n";
+    std::exit(1);
+  }
+  double a = 0.0;
+  const size_t shells = std::min<size_t>(r.AnisotropyDB.size(), o.Size / 2);
+  for (size_t i = 0; i < shells; ++i)
+    a += r.AnisotropyDB[i] / shells;
+  s.Add(r.TargetValue, r.LowFrequencyRatio, r.Symmetry, a);
+}
+
+// Every method at one level, a row each, in the order of the table. False
+// when a parameter table's evaluation fails.
+bool MeasureLevel(double level, const NamedTables& tables, const Options& o, LevelStats& byMethod)
+{
+  for (const auto& named : tables)
+  {
+    Stats s;
+    if (!MeasureTable(named.second, level, o, s))
+    {
+      return false;
+    }
+    AddRow(byMethod, level, named.first, s);
+  }
+  const double g = level / 255.0;
+  const std::pair<const char*, int> methods[] = {
+    { "Relaxed", vtkErrorDiffusionSampler::METHOD_RELAXED_ERROR_DIFFUSION },
+    { "WhiteNoise", vtkErrorDiffusionSampler::METHOD_WHITE_NOISE },
+    { "PoissonDisk", vtkErrorDiffusionSampler::METHOD_POISSON_DISK },
+    { "SampleElimination", vtkErrorDiffusionSampler::METHOD_SAMPLE_ELIMINATION },
+  };
+  for (const auto& method : methods)
+  {
+    Stats s;
+    for (int k = 0; k < o.Seeds; ++k)
+      MeasureMask(SamplerMask(o.Size, g, method.second, o.FirstSeed + k), o, s);
+    AddRow(byMethod, level, method.first, s);
+  }
+  Stats continuous;
+  for (int k = 0; k < o.Seeds; ++k)
+    MeasureMask(PoissonDiskMask(o.Size, g * o.Size * o.Size * o.Size, o.FirstSeed + k), o,
+      continuous);
+  AddRow(byMethod, level, "ContinuousPoissonDisk", continuous);
+  return true;
+}
+
+void PrintSummary(const Report& all)
+{
+  std::cout << "\n";
+  PrintBelow(all, "Optimized", "Paper", true);
+  PrintBelow(all, "Relaxed", "ContinuousPoissonDisk", false);
+  PrintBelow(all, "Relaxed", "ContinuousPoissonDisk", false, &Stats::L, "L(g)");
+  PrintBelow(all, "Relaxed", "PoissonDisk", false, &Stats::L, "L(g)");
+  PrintBelow(all, "Paper", "ContinuousPoissonDisk", false);
+  PrintBelow(all, "Relaxed", "WhiteNoise", false);
+  PrintBelow(all, "Paper", "WhiteNoise", false);
+}
 }
 
 int main(int argc, char* argv[])
@@ -356,116 +502,22 @@ int main(int argc, char* argv[])
   {
     return parsed;
   }
-  const int size = o.Size, seeds = o.Seeds, firstSeed = o.FirstSeed;
-  const double weight = o.Weight;
-  const std::string& optimizedFile = o.OptimizedFile;
-  const std::vector<double>& levels = o.Levels;
-
-  std::vector<std::pair<std::string, vtkErrorDiffusionParameterTable>> tables;
-  vtkErrorDiffusionParameterTable optimized = vtkErrorDiffusionParameterTable::Optimized();
-  if (!optimizedFile.empty())
+  const NamedTables tables = ParameterTables(o);
+  if (tables.empty())
   {
-    std::string error;
-    if (!vtkErrorDiffusionParameterTable::ReadFile(optimizedFile, optimized, error))
+    return 1;
+  }
+  PrintTableHead(o);
+  Report all;
+  for (double level : o.Levels)
+  {
+    all.emplace_back(level, LevelStats());
+    if (!MeasureLevel(level, tables, o, all.back().second))
     {
-      std::cerr << "bluenoise-quality: " << error << "\n";
       return 1;
     }
   }
-  tables.emplace_back("Optimized", optimized);
-  tables.emplace_back("Paper", vtkErrorDiffusionParameterTable::Paper());
-  tables.emplace_back("Fixed", vtkErrorDiffusionParameterTable::Fixed());
-
-  std::cout << "Whole " << size << "^3 cube, " << seeds << " seeds (" << firstSeed << ".."
-            << firstSeed + seeds - 1 << "), w = " << weight
-            << ", single realizations: mean ± standard deviation over the seeds. "
-               "Anisotropy: mean over shells 1.."
-            << size / 2 << " in dB.\n\n";
-  std::cout << "| level | method | T(g) | L(g) | S(g) | anisotropy dB |\n"
-               "| ---: | --- | ---: | ---: | ---: | ---: |\n";
-  const int dims[3] = { size, size, size };
-  // Per level, T of each method, for the summary under the table.
-  std::vector<std::pair<double, std::map<std::string, Stats>>> all;
-  for (double level : levels)
-  {
-    all.emplace_back(level, std::map<std::string, Stats>());
-    auto& byMethod = all.back().second;
-    const double g = level / 255.0;
-    auto row = [&](const std::string& name, const Stats& s) {
-      byMethod[name] = s;
-      std::cout << "| " << level << " | " << name << " | " << Stats::Format(s.T, 4) << " | "
-                << Stats::Format(s.L, 4) << " | " << Stats::Format(s.S, 4) << " | "
-                << Stats::Format(s.A, 2) << " |\n"
-                << std::flush;
-    };
-    auto measure = [&](const std::vector<unsigned char>& mask, Stats& s) {
-      vtkBlueNoiseSpectrumKernel::Result r;
-      std::string error;
-      if (!vtkBlueNoiseSpectrumKernel::Evaluate(mask.data(), dims, weight, r, &error))
-      {
-        std::cerr << "bluenoise-quality: " << error << "\n";
-        std::exit(1);
-      }
-      s.T.push_back(r.TargetValue);
-      s.L.push_back(r.LowFrequencyRatio);
-      s.S.push_back(r.Symmetry);
-      double a = 0.0;
-      const size_t shells = std::min<size_t>(r.AnisotropyDB.size(), size / 2);
-      for (size_t i = 0; i < shells; ++i)
-        a += r.AnisotropyDB[i] / shells;
-      s.A.push_back(a);
-    };
-    for (const auto& named : tables)
-    {
-      Stats s;
-      vtkErrorDiffusionOptimizer::Settings settings;
-      settings.GridSize = size;
-      settings.Seeds = 1;
-      settings.Weight = weight;
-      for (int k = 0; k < seeds; ++k)
-      {
-        settings.FirstSeed = firstSeed + k;
-        vtkErrorDiffusionOptimizer::Evaluation e;
-        std::string error;
-        if (!vtkErrorDiffusionOptimizer::Evaluate(named.second, level, settings, e, false, &error))
-        {
-          std::cerr << "bluenoise-quality: " << error << "\n";
-          return 1;
-        }
-        s.T.push_back(e.Whole.Target);
-        s.L.push_back(e.Whole.LowFrequencyRatio);
-        s.S.push_back(e.Whole.Symmetry);
-        s.A.push_back(e.Whole.AnisotropyDB);
-      }
-      row(named.first, s);
-    }
-    const std::pair<const char*, int> methods[] = {
-      { "Relaxed", vtkErrorDiffusionSampler::METHOD_RELAXED_ERROR_DIFFUSION },
-      { "WhiteNoise", vtkErrorDiffusionSampler::METHOD_WHITE_NOISE },
-      { "PoissonDisk", vtkErrorDiffusionSampler::METHOD_POISSON_DISK },
-      { "SampleElimination", vtkErrorDiffusionSampler::METHOD_SAMPLE_ELIMINATION },
-    };
-    for (const auto& method : methods)
-    {
-      Stats s;
-      for (int k = 0; k < seeds; ++k)
-        measure(SamplerMask(size, g, method.second, firstSeed + k), s);
-      row(method.first, s);
-    }
-    Stats continuous;
-    for (int k = 0; k < seeds; ++k)
-      measure(PoissonDiskMask(size, g * size * size * size, firstSeed + k), continuous);
-    row("ContinuousPoissonDisk", continuous);
-  }
-
-  std::cout << "\n";
-  PrintBelow(all, "Optimized", "Paper", true);
-  PrintBelow(all, "Relaxed", "ContinuousPoissonDisk", false);
-  PrintBelow(all, "Relaxed", "ContinuousPoissonDisk", false, &Stats::L, "L(g)");
-  PrintBelow(all, "Relaxed", "PoissonDisk", false, &Stats::L, "L(g)");
-  PrintBelow(all, "Paper", "ContinuousPoissonDisk", false);
-  PrintBelow(all, "Relaxed", "WhiteNoise", false);
-  PrintBelow(all, "Paper", "WhiteNoise", false);
-  PrintProfiles(firstSeed);
+  PrintSummary(all);
+  PrintProfiles(o.FirstSeed);
   return 0;
 }

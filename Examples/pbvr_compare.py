@@ -99,9 +99,10 @@ from paraview.simple import (
     SaveScreenshot,
     Show,
 )
-from vtkmodules.util.numpy_support import numpy_to_vtk, vtk_to_numpy
+from vtkmodules.util.numpy_support import vtk_to_numpy
 from vtkmodules.vtkCommonDataModel import vtkImageData
-from vtkmodules.vtkIOImage import vtkPNGReader, vtkPNGWriter
+
+from png_arrays import read_png, write_png
 
 DEFAULT_VOLUME = "/usr/share/mricron/templates/ch2bet.nii.gz"
 # The sampler's methods compared: (Method, short name); the paper's error
@@ -223,32 +224,6 @@ def support_bounds(geometry, mask):
     b[0::2] = corners.min(axis=0)
     b[1::2] = corners.max(axis=0)
     return list(b)
-
-
-def read_png(path):
-    """(h, w, c) float array in [0, 1], row 0 at the top."""
-    r = vtkPNGReader()
-    r.SetFileName(path)
-    r.Update()
-    img = r.GetOutput()
-    w, h, _ = img.GetDimensions()
-    a = vtk_to_numpy(img.GetPointData().GetScalars()).reshape(h, w, -1)
-    return a[::-1].astype(np.float64) / 255.0
-
-
-def write_png(path, rgb):
-    """rgb: (h, w, 3) float in [0, 1], row 0 at the top."""
-    h, w, _ = rgb.shape
-    data = np.ascontiguousarray((np.clip(rgb, 0, 1) * 255 + 0.5).astype(np.uint8)[::-1].reshape(-1, 3))
-    img = vtkImageData()
-    img.SetDimensions(w, h, 1)
-    arr = numpy_to_vtk(data, deep=1)
-    arr.SetName("rgb")
-    img.GetPointData().SetScalars(arr)
-    wr = vtkPNGWriter()
-    wr.SetFileName(path)
-    wr.SetInputData(img)
-    wr.Write()
 
 
 def luma(rgb):

@@ -57,18 +57,6 @@ def run(cmd, timeout):
     return proc.returncode, out, time.time() - start
 
 
-def png_size_and_content(path):
-    from vtkmodules.vtkIOImage import vtkPNGReader
-    from vtkmodules.util.numpy_support import vtk_to_numpy
-    r = vtkPNGReader()
-    r.SetFileName(path)
-    r.Update()
-    img = r.GetOutput()
-    w, h, _ = img.GetDimensions()
-    a = vtk_to_numpy(img.GetPointData().GetScalars()).reshape(h, w, -1)
-    return w, h, a
-
-
 def main():
     parser = argparse.ArgumentParser()
     parser.add_argument("--mode", choices=["compare", "macro"], default="compare")
@@ -87,6 +75,8 @@ def main():
             print("SKIP: %s not found" % path)
             return SKIP
     os.makedirs(args.out, exist_ok=True)
+    sys.path.insert(0, os.path.abspath(args.examples))
+    from png_arrays import read_png
     prefix = [args.xvfb_run, "-a", "-s", "-screen 0 1024x768x24"] if args.xvfb_run else []
     here = os.path.dirname(os.path.abspath(__file__))
 
@@ -105,10 +95,11 @@ def main():
         check(rc == 0, "pbvr_compare.py exited with 0 (%s) in %.1f s" % (rc, seconds))
         check(os.path.exists(png), "the PNG was written: %s" % png)
         if os.path.exists(png):
-            w, h, a = png_size_and_content(png)
+            a = read_png(png)
+            h, w = a.shape[:2]
             check(w == 4 * args.size and h > args.size, "the PNG is 4 panels wide: %dx%d" % (w, h))
             panels = [a[:, i * args.size:(i + 1) * args.size, :3] for i in range(4)]
-            lit = [float((p.max(axis=2) > 8).mean()) for p in panels]
+            lit = [float((p.max(axis=2) > 8 / 255.0).mean()) for p in panels]
             check(all(x > 0.02 for x in lit),
                   "every panel shows something (non-black fractions %s)"
                   % ", ".join("%.3f" % x for x in lit))
