@@ -500,6 +500,46 @@ bool vtkErrorDiffusionKernel::TestLayers(const float* density, const float* next
 }
 
 //------------------------------------------------------------------------------
+// Interior = the 3x3 erosion of "active here and in the next layer", with
+// the outside of the layer inactive: byte loops the compiler vectorizes, in
+// memory order whatever the orientation of the scan.
+void vtkErrorDiffusionKernel::FindInterior(const float* density, const float* next)
+{
+  const size_t nx = static_cast<size_t>(this->NX), ny = static_cast<size_t>(this->NY);
+  const size_t layer = nx * ny;
+  this->Interior.assign(layer, 0);
+  this->InteriorWork.resize(layer);
+  if (nx < 3 || ny < 3)
+  {
+    return;
+  }
+  unsigned char* both = this->InteriorWork.data();
+  for (size_t i = 0; i < layer; ++i)
+  {
+    both[i] = static_cast<unsigned char>((density[i] > 0.0f) & (density[i] < 1.0f) &
+      (next[i] > 0.0f) & (next[i] < 1.0f));
+  }
+  unsigned char* rows = this->Interior.data(); // eroded along x
+  for (size_t y = 0; y < ny; ++y)
+  {
+    const unsigned char* k = both + y * nx;
+    unsigned char* h = rows + y * nx;
+    for (size_t x = 1; x + 1 < nx; ++x)
+    {
+      h[x] = k[x - 1] & k[x] & k[x + 1];
+    }
+  }
+  unsigned char* eroded = both; // and along y
+  std::fill(eroded, eroded + nx, 0);
+  std::fill(eroded + (ny - 1) * nx, eroded + layer, 0);
+  for (size_t i = nx; i < layer - nx; ++i)
+  {
+    eroded[i] = rows[i - nx] & rows[i] & rows[i + nx];
+  }
+  std::swap(this->Interior, this->InteriorWork);
+}
+
+//------------------------------------------------------------------------------
 // The scan of one layer. Record keeps what each voxel received (for
 // MeasureReceivedError) and costs a store per voxel, so it is a template
 // flag. Rows away from the faces of a layer whose voxels and successors are
@@ -512,6 +552,14 @@ vtkIdType vtkErrorDiffusionKernel::ScanLayer(
   const bool nextLayerExists = next != nullptr;
   Reservoir reservoir;
   const bool allActive = this->TestLayers(density, next, reservoir.Remaining);
+  // Where there are inactive voxels, the fast path still serves the voxels
+  // whose neighborhood is active: the bulk of any real volume's support.
+  const unsigned char* interior = nullptr;
+  if (!allActive && next)
+  {
+    this->FindInterior(density, next);
+    interior = this->Interior.data();
+  }
   const LayerScan s = GetLayerScan(this->NX, this->NY, layer);
   this->SeedLayer(layer);
   float* cur = this->Current.data();
@@ -542,7 +590,7 @@ vtkIdType vtkErrorDiffusionKernel::ScanLayer(
       const float g = density[idx];
       const bool hasPrevU = p > 0;
       const bool hasNextU = p + 1 < s.NU;
-      const bool fast = fastRow && hasPrevU && hasNextU;
+      const bool fast = interior ? interior[idx] != 0 : fastRow && hasPrevU && hasNextU;
       if (!fast && !Active(g))
       {
         const unsigned char b = g >= 1.0f ? 1 : 0;
@@ -574,6 +622,7 @@ vtkIdType vtkErrorDiffusionKernel::ScanLayer(
       const float e = value - static_cast<float>(b);
       if (fast)
       {
+        --reservoir.Remaining;
         // value * w - b * w: the product does not wait for the comparison.
         const float taken = value >= threshold ? w[TARGET_U] : 0.0f;
         carry = value * w[TARGET_U] - taken;

@@ -251,6 +251,11 @@ private:
   // Parameters by density, indexed by the top bits of min(g, 1 - g) as a
   // float (2^-8 relative steps); filled as densities come up.
   std::vector<LevelParameters> ParameterTable;
+  // In a layer with inactive voxels: 1 where the voxel's 3x3 neighborhood is
+  // active in the layer and the next (all six targets are then active).
+  std::vector<unsigned char> Interior;
+  std::vector<unsigned char> InteriorWork;
+  void FindInterior(const float* density, const float* next);
   const float* TestedLayer = nullptr; // the last successor layer tested, and whether
   bool TestedLayerActive = false;     // all of its voxels were active
 };
