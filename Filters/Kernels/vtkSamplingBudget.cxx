@@ -30,9 +30,40 @@ vtkSamplingBudget::vtkSamplingBudget()
 //------------------------------------------------------------------------------
 void vtkSamplingBudget::Reset()
 {
-  this->Buckets.assign(NumberOfBuckets, Bucket());
+  // Pages stay allocated for the next pass over a volume.
+  for (auto& page : this->Pages)
+  {
+    std::fill(page.begin(), page.end(), Bucket());
+  }
   this->PositiveInfinities = 0.0;
   this->NegativeInfinities = 0.0;
+}
+
+//------------------------------------------------------------------------------
+vtkSamplingBudget::Bucket& vtkSamplingBudget::BucketAt(int i)
+{
+  if (this->Pages.empty())
+  {
+    this->Pages.resize(NumberOfPages);
+  }
+  std::vector<Bucket>& page = this->Pages[i / PageSize];
+  if (page.empty())
+  {
+    page.resize(PageSize);
+  }
+  return page[i % PageSize];
+}
+
+//------------------------------------------------------------------------------
+std::vector<vtkSamplingBudget::Bucket> vtkSamplingBudget::UsedBuckets() const
+{
+  std::vector<Bucket> used;
+  for (const auto& page : this->Pages)
+  {
+    std::copy_if(page.begin(), page.end(), std::back_inserter(used),
+      [](const Bucket& b) { return b.Count > 0.0; });
+  }
+  return used;
 }
 
 //------------------------------------------------------------------------------
@@ -59,7 +90,7 @@ void vtkSamplingBudget::Add(double x, double n)
     (x > 0.0 ? this->PositiveInfinities : this->NegativeInfinities) += n;
     return;
   }
-  Bucket& b = this->Buckets[BucketOf(x)];
+  Bucket& b = this->BucketAt(BucketOf(x));
   if (b.Count == 0.0)
   {
     b.Min = x;
@@ -77,42 +108,41 @@ void vtkSamplingBudget::Add(double x, double n)
 //------------------------------------------------------------------------------
 void vtkSamplingBudget::Merge(const vtkSamplingBudget& other)
 {
-  for (int i = 0; i < NumberOfBuckets; ++i)
+  for (size_t p = 0; p < other.Pages.size(); ++p)
   {
-    const Bucket& o = other.Buckets[i];
-    if (o.Count == 0.0)
+    for (size_t k = 0; k < other.Pages[p].size(); ++k)
     {
-      continue;
+      this->MergeBucket(static_cast<int>(p * PageSize + k), other.Pages[p][k]);
     }
-    Bucket& b = this->Buckets[i];
-    b.Min = b.Count == 0.0 ? o.Min : std::min(b.Min, o.Min);
-    b.Max = b.Count == 0.0 ? o.Max : std::max(b.Max, o.Max);
-    b.Count += o.Count;
-    b.Mean += (o.Mean - b.Mean) * (o.Count / b.Count);
   }
   this->PositiveInfinities += other.PositiveInfinities;
   this->NegativeInfinities += other.NegativeInfinities;
 }
 
 //------------------------------------------------------------------------------
+void vtkSamplingBudget::MergeBucket(int i, const Bucket& o)
+{
+  if (o.Count == 0.0)
+  {
+    return;
+  }
+  Bucket& b = this->BucketAt(i);
+  b.Min = b.Count == 0.0 ? o.Min : std::min(b.Min, o.Min);
+  b.Max = b.Count == 0.0 ? o.Max : std::max(b.Max, o.Max);
+  b.Count += o.Count;
+  b.Mean += (o.Mean - b.Mean) * (o.Count / b.Count);
+}
+
+//------------------------------------------------------------------------------
 bool vtkSamplingBudget::GetRange(double range[2]) const
 {
-  int first = 0;
-  while (first < NumberOfBuckets && this->Buckets[first].Count == 0.0)
-  {
-    ++first;
-  }
-  if (first == NumberOfBuckets)
+  const std::vector<Bucket> used = this->UsedBuckets();
+  if (used.empty())
   {
     return false;
   }
-  int last = NumberOfBuckets - 1;
-  while (this->Buckets[last].Count == 0.0)
-  {
-    --last;
-  }
-  range[0] = this->Buckets[first].Min;
-  range[1] = this->Buckets[last].Max;
+  range[0] = used.front().Min;
+  range[1] = used.back().Max;
   return true;
 }
 
@@ -147,7 +177,7 @@ double vtkSamplingBudget::BucketExpected(const Bucket& b, double scale, const Ma
 //------------------------------------------------------------------------------
 double vtkSamplingBudget::Expected(double scale, const Mapping& map) const
 {
-  return this->ExpectedOver(this->Buckets, scale, map);
+  return this->ExpectedOver(this->UsedBuckets(), scale, map);
 }
 
 //------------------------------------------------------------------------------
@@ -173,9 +203,7 @@ double vtkSamplingBudget::ExpectedOver(
 vtkSamplingBudget::Solution vtkSamplingBudget::Solve(double target, const Mapping& map) const
 {
   Solution solution;
-  std::vector<Bucket> used; // the bisection evaluates the sum many times
-  std::copy_if(this->Buckets.begin(), this->Buckets.end(), std::back_inserter(used),
-    [](const Bucket& b) { return b.Count > 0.0; });
+  const std::vector<Bucket> used = this->UsedBuckets(); // the bisection sums many times
   const auto expected = [&](double scale) { return this->ExpectedOver(used, scale, map); };
   const double infinity = std::numeric_limits<double>::infinity();
   solution.Reachable = expected(infinity);
@@ -217,9 +245,17 @@ std::vector<double> vtkSamplingBudget::Serialize() const
 {
   std::vector<double> values;
   values.reserve(4 * static_cast<size_t>(NumberOfBuckets) + 2);
-  for (const Bucket& b : this->Buckets)
+  for (int p = 0; p < NumberOfPages; ++p)
   {
-    values.insert(values.end(), { b.Count, b.Mean, b.Min, b.Max });
+    if (this->Pages.empty() || this->Pages[p].empty())
+    {
+      values.insert(values.end(), 4 * static_cast<size_t>(PageSize), 0.0);
+      continue;
+    }
+    for (const Bucket& b : this->Pages[p])
+    {
+      values.insert(values.end(), { b.Count, b.Mean, b.Min, b.Max });
+    }
   }
   values.push_back(this->PositiveInfinities);
   values.push_back(this->NegativeInfinities);
@@ -233,10 +269,14 @@ bool vtkSamplingBudget::Deserialize(const std::vector<double>& values)
   {
     return false;
   }
+  this->Reset();
   for (int i = 0; i < NumberOfBuckets; ++i)
   {
     const double* v = values.data() + 4 * static_cast<size_t>(i);
-    this->Buckets[i] = Bucket{ v[0], v[1], v[2], v[3] };
+    if (v[0] != 0.0) // an empty bucket's other fields are never read
+    {
+      this->BucketAt(i) = Bucket{ v[0], v[1], v[2], v[3] };
+    }
   }
   this->PositiveInfinities = values[values.size() - 2];
   this->NegativeInfinities = values.back();

@@ -20,7 +20,12 @@
  * equal (every value of 8- and 16-bit data, and any value of fewer than 2^7
  * distinct values per power of two) is exact. NaN is not counted (its density
  * is 0); +inf and -inf are counted apart (density 1 and 0 for any s > 0).
- * Memory: 2 MiB; merging two histograms costs a pass over the buckets.
+ * Memory: the buckets live in 256 pages of 256 (8 KiB each), a page allocated
+ * when a value first falls in it and kept, zeroed, by Reset() for the next
+ * pass: up to 2 MiB, a few pages for most data (the values of one sign and a
+ * few binary orders of magnitude share a page), so that a histogram per
+ * thread per update costs what its values touch. Merging, the range and
+ * Solve pass over the allocated pages only, in bucket order as before.
  *
  * Solve. Sum(s) = sum over buckets of: 0 where a Max + b <= 0, the count
  * where s (a Min + b) >= 1, and s Count (a Mean + b) where the whole bucket
@@ -97,10 +102,18 @@ public:
   bool Deserialize(const std::vector<double>& values);
 
 private:
+  static constexpr int PageSize = 256;
+  static constexpr int NumberOfPages = NumberOfBuckets / PageSize;
+
+  Bucket& BucketAt(int i);                 // allocates its page
+  void MergeBucket(int i, const Bucket& o); // o: bucket i of another histogram
+  std::vector<Bucket> UsedBuckets() const; // those with a count, in bucket order
   double BucketExpected(const Bucket& b, double scale, const Mapping& map) const;
   double ExpectedOver(const std::vector<Bucket>& buckets, double scale, const Mapping& map) const;
 
-  std::vector<Bucket> Buckets;
+  // NumberOfPages pages of PageSize buckets, each empty until used (copyable:
+  // vtkSMPThreadLocal copies its exemplar).
+  std::vector<std::vector<Bucket>> Pages;
   double PositiveInfinities = 0.0;
   double NegativeInfinities = 0.0;
 };

@@ -1,6 +1,8 @@
 # SPDX-FileCopyrightText: Copyright (c) 2025-2026 the BlueNoiseSampling contributors
 # SPDX-License-Identifier: BSD-3-Clause
 bluenoise_add_test(TestErrorDiffusionParameterTable LABELS sampler)
+bluenoise_add_test(TestErrorDiffusionChargeCurve LABELS sampler threads)
+bluenoise_add_test(TestSamplingBudget LABELS sampler)
 bluenoise_add_test(TestErrorDiffusionSamplerCounts LABELS sampler)
 bluenoise_add_test(TestBlueNoiseRelaxation LABELS sampler)
 bluenoise_add_test(TestErrorDiffusionSamplerDeterminism LABELS sampler threads)
