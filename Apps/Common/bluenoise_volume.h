@@ -12,7 +12,9 @@
 // data is bounded by zlib's largest ratio. So time and memory follow the
 // file's real size, whatever its header claims. Text headers with a NUL byte
 // are refused, NRRD fields are read as vtkNrrdReader reads them (": ", the
-// first axis as components when it has at most 9 entries), and the reader's
+// first axis as components when it has at most 9 entries), NIfTI headers as
+// vtkNIFTIImageReader reads them (the version from the magic, only the
+// datatype codes it knows, the .img of a .hdr by its suffix), and the reader's
 // own extent must equal the checked one before it reads any data. Reader
 // errors (VTK's ErrorEvent) and failed allocations (std::bad_alloc) are
 // caught too. Every failure is a message naming the file and the problem.

@@ -10,6 +10,7 @@
 #include "vtksys/SystemTools.hxx"
 
 #include <algorithm>
+#include <cctype>
 #include <cerrno>
 #include <cmath>
 #include <cstdint>
@@ -244,7 +245,9 @@ bool ReadHead(const std::string& path, size_t limit, bool gzipped, std::string& 
 }
 
 //------------------------------------------------------------------------------
-// NIfTI-1 / NIfTI-2 / Analyze 7.5: the binary header's fields, either byte order.
+// NIfTI-1 / NIfTI-2 / Analyze 7.5: the binary header's fields, either byte order,
+// read the way VTK's vtkNIFTIImageReader reads them (the version from the magic,
+// the data file from the suffix), so that what is checked is what it will trust.
 namespace
 {
 struct NIfTIHeader
@@ -253,9 +256,9 @@ struct NIfTIHeader
   double PixDim[8] = { 0 };
   double VoxOffset = 0;
   double BitPix = 0;
-  double DataTypeBytes = 0; // the size the datatype code implies (0: unknown code)
+  int DataType = 0;
+  double DataTypeBytes = 0; // bytes per voxel of the datatype code (0: unknown code)
   size_t HeaderSize = 348;
-  bool SingleFile = false;
 };
 
 template <typename T>
@@ -272,36 +275,67 @@ T Field(const std::string& h, size_t at, bool swap)
   return v;
 }
 
-// Bytes per voxel of NIfTI's datatype codes (DT_UINT8 = 2, ..., DT_RGBA32 = 2304).
+// Bytes per voxel of the datatype codes vtkNIFTIImageReader maps to a VTK
+// type (DT_UINT8 = 2, ..., DT_RGBA32 = 2304); 0 for any other code. VTK 9.2's
+// RequestInformation looks the code up in its table without a bound, so an
+// unknown code reads past the table's end and crashes (found by the volume-
+// loader fuzzer): NIfTI's own DT_BINARY, DT_FLOAT128 and DT_COMPLEX256 included.
 double NIfTITypeBytes(int code)
 {
   static const std::map<int, double> bytes = { { 2, 1 }, { 4, 2 }, { 8, 4 }, { 16, 4 },
     { 32, 8 }, { 64, 8 }, { 128, 3 }, { 256, 1 }, { 512, 2 }, { 768, 4 }, { 1024, 8 },
-    { 1280, 8 }, { 1536, 16 }, { 1792, 16 }, { 2048, 32 }, { 2304, 4 } };
+    { 1280, 8 }, { 1792, 16 }, { 2304, 4 } };
   const auto it = bytes.find(code);
   return it == bytes.end() ? 0.0 : it->second;
 }
 
-bool ParseNIfTI(const std::string& h, NIfTIHeader& n, std::string& error)
+// The version vtkNIFTIImageReader reads the header as: it looks at the magic
+// (NIfTI-2's at byte 4 first, then NIfTI-1's at byte 344), not at sizeof_hdr;
+// 0 without a magic (Analyze 7.5), -1 for a NIfTI-2 magic it would misread
+// (versions 3 to 9, or the line-ending bytes damaged).
+int NIfTIVersion(const std::string& h)
 {
-  if (h.size() < 348)
+  if (h[4] == 'n' && (h[5] == '+' || h[5] == 'i') && h[6] >= '2' && h[6] <= '9' && h[7] == '\0')
   {
-    error = "the file is shorter than a NIfTI header (" + std::to_string(h.size()) + " bytes)";
-    return false;
+    return h[6] == '2' && h.compare(8, 4, "\r\n\032\n") == 0 ? 2 : -1;
   }
+  if (h[344] == 'n' && (h[345] == '+' || h[345] == 'i') && h[346] == '1' && h[347] == '\0')
+  {
+    return 1;
+  }
+  return 0;
+}
+
+// sizeof_hdr must be the size the magic implies, in either byte order; the
+// byte order found here is the data's. (VTK takes the byte order from dim[0]
+// instead; both agree whenever dim[0] passes its check below.)
+bool NIfTIHeaderSize(const std::string& h, int version, bool& swap, std::string& error)
+{
   const int32_t size = Field<int32_t>(h, 0, false);
-  const bool two = size == 540 || size == 0x1C020000;
-  const bool swap = size == 0x5C010000 || size == 0x1C020000;
-  if (size != 348 && !two && !swap)
+  const int32_t swapped = Field<int32_t>(h, 0, true);
+  const int32_t expected = version == 2 ? 540 : 348;
+  const int32_t other = version == 2 ? 348 : 540;
+  swap = size != expected && swapped == expected;
+  if (size == expected || swap)
+  {
+    return true;
+  }
+  if (size == other || swapped == other)
+  {
+    error = "sizeof_hdr is " + std::to_string(other) + " but " +
+      (version == 2 ? "the magic says NIfTI-2 (540)"
+        : version == 1 ? "the magic says NIfTI-1 (348)"
+                       : "without a NIfTI magic it is an Analyze 7.5 header (348)");
+  }
+  else
   {
     error = "not a NIfTI header (sizeof_hdr is " + std::to_string(size) + ")";
-    return false;
   }
-  if (two && h.size() < 540)
-  {
-    error = "the file is shorter than a NIfTI-2 header";
-    return false;
-  }
+  return false;
+}
+
+bool NIfTIFields(const std::string& h, bool two, bool swap, NIfTIHeader& n, std::string& error)
+{
   n.HeaderSize = two ? 540 : 348;
   for (int i = 0; i < 8; ++i)
   {
@@ -310,12 +344,19 @@ bool ParseNIfTI(const std::string& h, NIfTIHeader& n, std::string& error)
     n.PixDim[i] = two ? Field<double>(h, 104 + 8 * i, swap) : Field<float>(h, 76 + 4 * i, swap);
   }
   n.BitPix = two ? Field<int16_t>(h, 14, swap) : Field<int16_t>(h, 72, swap);
-  n.DataTypeBytes = NIfTITypeBytes(two ? Field<int16_t>(h, 12, swap) : Field<int16_t>(h, 70, swap));
+  n.DataType = two ? Field<int16_t>(h, 12, swap) : Field<int16_t>(h, 70, swap);
+  n.DataTypeBytes = NIfTITypeBytes(n.DataType);
   n.VoxOffset = two ? static_cast<double>(Field<int64_t>(h, 168, swap)) : Field<float>(h, 108, swap);
-  n.SingleFile = two ? h.compare(4, 3, "n+2") == 0 : h.compare(344, 3, "n+1") == 0;
   if (!(n.Dim[0] >= 1 && n.Dim[0] <= 7))
   {
     error = "dim[0] (the number of dimensions) is " + Number(n.Dim[0]) + ", not in [1, 7]";
+    return false;
+  }
+  if (n.DataTypeBytes == 0.0)
+  {
+    error = "datatype " + std::to_string(n.DataType) +
+      " is not one VTK's NIfTI reader reads (integers of 8 to 64 bits, float32, float64, "
+      "complex64, complex128, RGB24, RGBA32)";
     return false;
   }
   if (!(n.BitPix >= 8) || std::fmod(n.BitPix, 8.0) != 0.0)
@@ -323,21 +364,67 @@ bool ParseNIfTI(const std::string& h, NIfTIHeader& n, std::string& error)
     error = "bitpix is " + Number(n.BitPix) + " (a multiple of 8 is needed)";
     return false;
   }
-  if (!std::isfinite(n.VoxOffset) || n.VoxOffset < (n.SingleFile ? n.HeaderSize : 0))
+  return true;
+}
+
+bool ParseNIfTI(const std::string& h, bool singleFile, NIfTIHeader& n, std::string& error)
+{
+  if (h.size() < 348)
+  {
+    error = "the file is shorter than a NIfTI header (" + std::to_string(h.size()) + " bytes)";
+    return false;
+  }
+  const int version = NIfTIVersion(h);
+  if (version < 0)
+  {
+    error = "the magic at byte 4 names a NIfTI version other than 1 and 2, or its "
+            "line-ending bytes are damaged";
+    return false;
+  }
+  bool swap = false;
+  if (!NIfTIHeaderSize(h, version, swap, error))
+  {
+    return false;
+  }
+  if (version == 2 && h.size() < 540)
+  {
+    error = "the file is shorter than a NIfTI-2 header";
+    return false;
+  }
+  if (!NIfTIFields(h, version == 2, swap, n, error))
+  {
+    return false;
+  }
+  // In a .nii the data follow the header; a .hdr's are in its .img.
+  if (!std::isfinite(n.VoxOffset) || n.VoxOffset < (singleFile ? n.HeaderSize : 0))
   {
     error = "vox_offset is " + Number(n.VoxOffset);
     return false;
   }
   return true;
 }
+
+// The .img of a .hdr where vtkNIFTIImageReader looks for it: the same
+// compression first (x.hdr: x.img, else x.img.gz; x.hdr.gz: x.img.gz, else
+// x.img), in the case of the header's suffix.
+std::string NIfTIImageFile(const std::string& path, bool gzipped)
+{
+  const size_t m = path.size() - (gzipped ? 3 : 0);
+  const bool upper = std::isupper(static_cast<unsigned char>(path[m - 3])) != 0;
+  const std::string first = path.substr(0, m - 3) + (upper ? "IMG" : "img") + path.substr(m);
+  const std::string second = gzipped ? first.substr(0, m) : first + (upper ? ".GZ" : ".gz");
+  return FileSize(first) >= 0 ? first : second;
+}
 }
 
 bool CheckNIfTI(const std::string& path, Volume& volume, std::string& error)
 {
   const bool gzipped = Lower(path).size() > 3 && Lower(path).substr(path.size() - 3) == ".gz";
+  const std::string bare = Lower(path).substr(0, path.size() - (gzipped ? 3 : 0));
+  const bool singleFile = bare.size() < 4 || bare.substr(bare.size() - 4) != ".hdr";
   std::string head;
   NIfTIHeader n;
-  if (!ReadHead(path, 540, gzipped, head, error) || !ParseNIfTI(head, n, error))
+  if (!ReadHead(path, 540, gzipped, head, error) || !ParseNIfTI(head, singleFile, n, error))
   {
     return false;
   }
@@ -346,7 +433,9 @@ bool CheckNIfTI(const std::string& path, Volume& volume, std::string& error)
   for (int i = 0; i < 3; ++i)
   {
     d.Dimensions[i] = i < rank ? n.Dim[i + 1] : 1.0;
-    d.Spacing[i] = i < rank ? n.PixDim[i + 1] : 1.0;
+    // The reader's spacing is pixdim[1..3] whatever the rank, a 0 beyond the
+    // rank taken as 1.
+    d.Spacing[i] = i >= rank && n.PixDim[i + 1] == 0.0 ? 1.0 : n.PixDim[i + 1];
   }
   // Only the first time point is read; a fifth dimension holds components.
   d.Components = rank >= 5 ? n.Dim[5] : 1.0;
@@ -355,15 +444,18 @@ bool CheckNIfTI(const std::string& path, Volume& volume, std::string& error)
     error = "dimension t is " + Number(n.Dim[4]);
     return false;
   }
+  // VTK 9.2's reader steps through a row with int byte counts.
+  const double row = d.Dimensions[0] * d.Components * n.DataTypeBytes;
+  if (row > 2147483647.0)
+  {
+    error = "a row of the data is " + Number(row) +
+      " bytes, more than VTK's NIfTI reader reads (2^31 - 1)";
+    return false;
+  }
   // The reader allocates by the datatype; a bitpix that says less is not trusted.
   d.BytesPerValue = std::max(n.BitPix / 8.0, n.DataTypeBytes);
   // The data: in the same file after vox_offset, or in the .img of a .hdr.
-  std::string body = path;
-  if (!n.SingleFile)
-  {
-    const std::string stem = path.substr(0, path.size() - (gzipped ? 7 : 4));
-    body = FileSize(stem + ".img") >= 0 ? stem + ".img" : stem + ".img.gz";
-  }
+  const std::string body = singleFile ? path : NIfTIImageFile(path, gzipped);
   const bool bodyGzipped = Lower(body).substr(body.size() - 3) == ".gz";
   if (bodyGzipped)
   {

@@ -6,10 +6,10 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstring>
 #include <limits>
-#include <map>
-#include <sstream>
-#include <string>
+#include <list>
+#include <utility>
 
 namespace
 {
@@ -18,29 +18,52 @@ namespace
 const double FixedLevels[] = { 0.0255, 0.05, 0.1, 0.25, 0.5, 1.0, 2.0, 4.0, 8.0, 16.0, 32.0,
   48.0, 64.0, 80.0, 96.0, 112.0, 127.5 };
 
+// What a curve is calibrated from: every value of the table's keys, in order,
+// then the scale, compared bit for bit (the key once was the table's text with
+// the scale to 6 digits, so nearby scales shared one curve).
+std::vector<double> CurveKey(const vtkErrorDiffusionParameterTable& table, double scale)
+{
+  std::vector<double> key;
+  for (const auto& k : table.GetKeys())
+  {
+    key.push_back(k.Level);
+    key.insert(key.end(), k.Coefficients.begin(), k.Coefficients.end());
+    key.push_back(k.Modulation);
+  }
+  key.push_back(scale);
+  return key;
+}
+
+bool SameKey(const std::vector<double>& a, const std::vector<double>& b)
+{
+  return a.size() == b.size() && std::memcmp(a.data(), b.data(), a.size() * sizeof(double)) == 0;
+}
+
+// The curves used last, the most recent first.
 std::mutex CacheMutex;
-std::map<std::string, std::shared_ptr<vtkErrorDiffusionChargeCurve>> Cache;
+std::list<std::pair<std::vector<double>, std::shared_ptr<vtkErrorDiffusionChargeCurve>>> Cache;
 }
 
 //------------------------------------------------------------------------------
 std::shared_ptr<vtkErrorDiffusionChargeCurve> vtkErrorDiffusionChargeCurve::Get(
   const vtkErrorDiffusionParameterTable& table, double modulationScale)
 {
-  std::ostringstream key;
-  table.Write(key);
-  key << "scale " << modulationScale;
+  std::vector<double> key = CurveKey(table, modulationScale);
   std::lock_guard<std::mutex> lock(CacheMutex);
-  auto found = Cache.find(key.str());
-  if (found != Cache.end())
+  for (auto it = Cache.begin(); it != Cache.end(); ++it)
   {
-    return found->second;
-  }
-  if (Cache.size() >= 256)
-  {
-    Cache.clear(); // a parameter search makes a new table per candidate
+    if (SameKey(it->first, key))
+    {
+      Cache.splice(Cache.begin(), Cache, it);
+      return it->second;
+    }
   }
   auto curve = std::make_shared<vtkErrorDiffusionChargeCurve>(table, modulationScale);
-  Cache[key.str()] = curve;
+  Cache.emplace_front(std::move(key), curve);
+  if (Cache.size() > CacheCapacity)
+  {
+    Cache.pop_back(); // its users keep it alive; the next Get calibrates anew
+  }
   return curve;
 }
 

@@ -35,8 +35,11 @@
  *
  * Cost and caching. A level costs 3 to 60 ms (the low levels need wide boxes)
  * and is calibrated only when a density that needs it comes up. Curves are
- * shared by every kernel of the process with the same table and scale (Get()),
- * and thread safe.
+ * shared by every kernel of the process with the same table and scale (Get():
+ * the same key values and scale bit for bit), and thread safe. The process
+ * keeps the CacheCapacity curves used last (least recently used out first),
+ * so that going back to an earlier scale or table, as a GUI user or a
+ * parameter search does, finds its levels calibrated.
  */
 #ifndef vtkErrorDiffusionChargeCurve_h
 #define vtkErrorDiffusionChargeCurve_h
@@ -44,6 +47,7 @@
 #include "vtkErrorDiffusionParameterTable.h"
 #include "vtkFiltersBlueNoiseModule.h" // for export macro
 
+#include <cstddef>
 #include <memory>
 #include <mutex>
 #include <vector>
@@ -51,6 +55,9 @@
 class VTKFILTERSBLUENOISE_EXPORT vtkErrorDiffusionChargeCurve
 {
 public:
+  /// Curves the process keeps for Get() (the least recently used go first).
+  static constexpr std::size_t CacheCapacity = 64;
+
   /// The process-wide curve of this table and scale (created on first use).
   static std::shared_ptr<vtkErrorDiffusionChargeCurve> Get(
     const vtkErrorDiffusionParameterTable& table, double modulationScale);

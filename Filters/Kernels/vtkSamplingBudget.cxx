@@ -30,7 +30,12 @@ vtkSamplingBudget::vtkSamplingBudget()
 //------------------------------------------------------------------------------
 void vtkSamplingBudget::Reset()
 {
-  this->Buckets.assign(NumberOfBuckets, Bucket());
+  // Pages stay allocated for the next pass over a volume.
+  this->Pages.resize(NumberOfPages);
+  for (auto& page : this->Pages)
+  {
+    std::fill(page.begin(), page.end(), Bucket());
+  }
   this->PositiveInfinities = 0.0;
   this->NegativeInfinities = 0.0;
 }
@@ -38,19 +43,13 @@ void vtkSamplingBudget::Reset()
 //------------------------------------------------------------------------------
 void vtkSamplingBudget::Merge(const vtkSamplingBudget& other)
 {
-  for (int i = 0; i < NumberOfBuckets; ++i)
-  {
-    const Bucket& o = other.Buckets[i];
-    if (o.Count == 0.0)
-    {
-      continue;
-    }
-    Bucket& b = this->Buckets[i];
+  other.ForEachUsed([this](int i, const Bucket& o) {
+    Bucket& b = this->BucketAt(i);
     b.Min = b.Count == 0.0 ? o.Min : std::min(b.Min, o.Min);
     b.Max = b.Count == 0.0 ? o.Max : std::max(b.Max, o.Max);
     b.Count += o.Count;
     b.Sum += o.Sum;
-  }
+  });
   this->PositiveInfinities += other.PositiveInfinities;
   this->NegativeInfinities += other.NegativeInfinities;
 }
@@ -58,23 +57,13 @@ void vtkSamplingBudget::Merge(const vtkSamplingBudget& other)
 //------------------------------------------------------------------------------
 bool vtkSamplingBudget::GetRange(double range[2]) const
 {
-  int first = 0;
-  while (first < NumberOfBuckets && this->Buckets[first].Count == 0.0)
-  {
-    ++first;
-  }
-  if (first == NumberOfBuckets)
-  {
-    return false;
-  }
-  int last = NumberOfBuckets - 1;
-  while (this->Buckets[last].Count == 0.0)
-  {
-    --last;
-  }
-  range[0] = this->Buckets[first].Min;
-  range[1] = this->Buckets[last].Max;
-  return true;
+  bool any = false;
+  this->ForEachUsed([&](int, const Bucket& b) {
+    range[0] = any ? range[0] : b.Min;
+    range[1] = b.Max;
+    any = true;
+  });
+  return any;
 }
 
 //------------------------------------------------------------------------------
@@ -117,14 +106,9 @@ double vtkSamplingBudget::Expected(double scale, const Mapping& map) const
 std::vector<vtkSamplingBudget::Summary> vtkSamplingBudget::Summarize() const
 {
   std::vector<Summary> used;
-  for (int i = 0; i < NumberOfBuckets; ++i)
-  {
-    const Bucket& b = this->Buckets[i];
-    if (b.Count > 0.0)
-    {
-      used.push_back({ b.Count, b.Sum / b.Count * UnitOf(i), b.Min, b.Max });
-    }
-  }
+  this->ForEachUsed([&used](int i, const Bucket& b) {
+    used.push_back({ b.Count, b.Sum / b.Count * UnitOf(i), b.Min, b.Max });
+  });
   return used;
 }
 
@@ -188,12 +172,14 @@ vtkSamplingBudget::Solution vtkSamplingBudget::Solve(double target, const Mappin
 //------------------------------------------------------------------------------
 std::vector<double> vtkSamplingBudget::Serialize() const
 {
-  std::vector<double> values;
-  values.reserve(4 * static_cast<size_t>(NumberOfBuckets) + 2);
-  for (const Bucket& b : this->Buckets)
-  {
-    values.insert(values.end(), { b.Count, b.Sum, b.Min, b.Max });
-  }
+  std::vector<double> values(4 * static_cast<size_t>(NumberOfBuckets), 0.0);
+  this->ForEachUsed([&values](int i, const Bucket& b) {
+    double* v = values.data() + 4 * static_cast<size_t>(i);
+    v[0] = b.Count;
+    v[1] = b.Sum;
+    v[2] = b.Min;
+    v[3] = b.Max;
+  });
   values.push_back(this->PositiveInfinities);
   values.push_back(this->NegativeInfinities);
   return values;
@@ -206,10 +192,14 @@ bool vtkSamplingBudget::Deserialize(const std::vector<double>& values)
   {
     return false;
   }
+  this->Reset();
   for (int i = 0; i < NumberOfBuckets; ++i)
   {
     const double* v = values.data() + 4 * static_cast<size_t>(i);
-    this->Buckets[i] = Bucket{ v[0], v[1], v[2], v[3] };
+    if (v[0] != 0.0) // an unused bucket allocates no page
+    {
+      this->BucketAt(i) = Bucket{ v[0], v[1], v[2], v[3] };
+    }
   }
   this->PositiveInfinities = values[values.size() - 2];
   this->NegativeInfinities = values.back();

@@ -22,7 +22,9 @@
  * equal (every value of 8- and 16-bit data, and any value of fewer than 2^7
  * distinct values per power of two) is exact. NaN is not counted (its density
  * is 0); +inf and -inf are counted apart (density 1 and 0 for any s > 0).
- * Memory: 2 MiB; merging two histograms costs a pass over the buckets.
+ * Memory: up to 2 MiB, in pages of 256 buckets allocated when first used
+ * (a small volume touches a few) and kept by Reset; merging two histograms
+ * costs a pass over the used pages.
  *
  * Solve. Sum(s) = sum over buckets of: 0 where a Max + b <= 0, the count
  * where s (a Min + b) >= 1, and s Count (a Mean + b) where the whole bucket
@@ -106,7 +108,7 @@ public:
       return;
     }
     const int i = BucketOf(x);
-    Bucket& b = this->Buckets[i];
+    Bucket& b = this->BucketAt(i);
     b.Min = b.Count == 0.0 ? x : std::min(b.Min, x);
     b.Max = b.Count == 0.0 ? x : std::max(b.Max, x);
     b.Count += n;
@@ -131,6 +133,35 @@ public:
   bool Deserialize(const std::vector<double>& values);
 
 private:
+  static constexpr int PageSize = 256;
+  static constexpr int NumberOfPages = NumberOfBuckets / PageSize;
+
+  Bucket& BucketAt(int i) // allocates its page
+  {
+    std::vector<Bucket>& page = this->Pages[i / PageSize];
+    if (page.empty())
+    {
+      page.resize(PageSize);
+    }
+    return page[i % PageSize];
+  }
+  // Calls f(i, bucket) for the used buckets, in bucket order.
+  template <typename F>
+  void ForEachUsed(F&& f) const
+  {
+    for (int p = 0; p < NumberOfPages; ++p)
+    {
+      const std::vector<Bucket>& page = this->Pages[p];
+      for (int k = 0; k < static_cast<int>(page.size()); ++k)
+      {
+        if (page[k].Count > 0.0)
+        {
+          f(p * PageSize + k, page[k]);
+        }
+      }
+    }
+  }
+
   // A used bucket as Solve needs it.
   struct Summary
   {
@@ -154,7 +185,9 @@ private:
   static double BucketExpected(const Summary& b, double scale, const Mapping& map);
   double ExpectedOver(const std::vector<Summary>& used, double scale, const Mapping& map) const;
 
-  std::vector<Bucket> Buckets;
+  // NumberOfPages pages of PageSize buckets, each empty until used (copyable:
+  // vtkSMPThreadLocal copies its exemplar).
+  std::vector<std::vector<Bucket>> Pages;
   double PositiveInfinities = 0.0;
   double NegativeInfinities = 0.0;
 };

@@ -9,7 +9,6 @@
 #include "vtkFloatArray.h"
 #include "vtkImageData.h"
 #include "vtkMatrix3x3.h"
-#include "vtkMatrix4x4.h"
 #include "vtkPointData.h"
 #include "vtkPoints.h"
 #include "vtkTypeInt32Array.h"
@@ -392,32 +391,12 @@ void vtkErrorDiffusionPointAssembler::AddLayer(
 }
 
 //------------------------------------------------------------------------------
-std::vector<std::array<int, 3>> vtkErrorDiffusionPointAssembler::RemoveLast(vtkIdType n)
+vtkIdType vtkErrorDiffusionPointAssembler::RemoveLast(vtkIdType n)
 {
   n = std::min(std::max<vtkIdType>(n, 0), this->Total);
-  // The voxels of those points: their coordinates back to index space,
-  // rounded (a jittered point stays inside its voxel).
-  double inverse[16];
-  vtkMatrix4x4::Invert(this->IndexToPhysical, inverse);
-  std::vector<std::array<int, 3>> voxels;
-  for (vtkIdType p = this->Total - n; p < this->Total; ++p)
-  {
-    double xyz[3];
-    this->Coordinates->GetTuple(p, xyz);
-    std::array<int, 3> ijk;
-    for (int r = 0; r < 3; ++r)
-    {
-      const double index = std::floor(inverse[4 * r] * xyz[0] + inverse[4 * r + 1] * xyz[1] +
-        inverse[4 * r + 2] * xyz[2] + inverse[4 * r + 3] + 0.5);
-      // A degenerate geometry (zero or huge spacing, huge origin) gives no
-      // index: VTK_INT_MIN, outside any extent, rather than an undefined cast.
-      ijk[r] = index >= VTK_INT_MIN && index <= VTK_INT_MAX ? static_cast<int>(index) : VTK_INT_MIN;
-    }
-    voxels.push_back(ijk);
-  }
   this->Total -= n;
   this->Reserve(this->Total);
-  return voxels;
+  return n;
 }
 
 //------------------------------------------------------------------------------

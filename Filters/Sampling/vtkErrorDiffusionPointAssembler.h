@@ -41,7 +41,6 @@
 #include "vtkSmartPointer.h"           // for members
 #include "vtkType.h"                   // for vtkIdType
 
-#include <array>
 #include <cstdint>
 #include <string>
 #include <vector>
@@ -90,8 +89,8 @@ public:
   /// Points appended so far.
   vtkIdType GetNumberOfPoints() const { return this->Total; }
 
-  /// Drops the last n points appended; returns their voxels' (i, j, k).
-  std::vector<std::array<int, 3>> RemoveLast(vtkIdType n);
+  /// Drops the last n points appended (at most all); returns how many went.
+  vtkIdType RemoveLast(vtkIdType n);
 
   /// Names of the image arrays that were not carried (wrong number of tuples).
   const std::vector<std::string>& GetSkippedArrays() const { return this->Skipped; }

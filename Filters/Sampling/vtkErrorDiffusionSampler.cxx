@@ -107,6 +107,25 @@ void AddFieldArray(vtkFieldData* fd, vtkDataArray* array, const char* name, int 
   fd->AddArray(array);
 }
 
+// Clears the voxels of the last n points the closing correction took back.
+// Points are appended in the mask's order (layer after layer, x fastest), so
+// theirs are the mask's last n set voxels. (They once came back from the
+// points' coordinates, which single precision far from the origin rounds to
+// another voxel, even one outside the mask: an out-of-bounds write found by
+// fuzzing.)
+void ClearLastVoxels(vtkUnsignedCharArray* mask, vtkIdType n)
+{
+  unsigned char* values = mask->GetPointer(0);
+  for (vtkIdType i = mask->GetNumberOfValues() - 1; i >= 0 && n > 0; --i)
+  {
+    if (values[i])
+    {
+      values[i] = 0;
+      --n;
+    }
+  }
+}
+
 // The parameter table of a ParameterSet; false with the reason for a bad file.
 bool SelectTable(
   int set, const std::string& file, vtkErrorDiffusionParameterTable& table, std::string& error)
@@ -833,22 +852,11 @@ void vtkErrorDiffusionSampler::FinishOutput(
       this->Method == METHOD_ERROR_DIFFUSION || this->Method == METHOD_RELAXED_ERROR_DIFFUSION;
     if (diffusion && leftover <= -0.5)
     {
-      const auto voxels = run.Assembler.RemoveLast(static_cast<vtkIdType>(std::llround(-leftover)));
-      for (const auto& ijk : voxels)
+      const vtkIdType removed =
+        run.Assembler.RemoveLast(static_cast<vtkIdType>(std::llround(-leftover)));
+      if (run.Mask)
       {
-        // Only a voxel of the sampled extent: the index comes back from the
-        // point's coordinates, which a degenerate geometry does not invert
-        // (found by fuzzing: an out-of-bounds write into the mask).
-        const bool inside = ijk[0] >= run.Sampled[0] && ijk[0] <= run.Sampled[1] &&
-          ijk[1] >= run.Sampled[2] && ijk[1] <= run.Sampled[3] && ijk[2] >= run.Sampled[4] &&
-          ijk[2] <= run.Sampled[5];
-        if (run.Mask && inside)
-        {
-          const vtkIdType i = (ijk[0] - run.Sampled[0]) +
-            static_cast<vtkIdType>(run.NX()) *
-              ((ijk[1] - run.Sampled[2]) + static_cast<vtkIdType>(run.NY()) * (ijk[2] - run.Sampled[4]));
-          run.Mask->SetValue(i, 0);
-        }
+        ClearLastVoxels(run.Mask, removed);
       }
     }
     run.Points->SetPoints(run.Assembler.End());

@@ -32,6 +32,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <new>
 #include <sstream>
 #include <string>
 #include <utility>
@@ -190,6 +191,36 @@ void CheckShape(const int* dims, const int* first, std::size_t i, std::ostringst
     error << "Realization " << i << " has a " << dims[0] << " x " << dims[1] << " x " << dims[2]
           << " grid but realization 0 has " << first[0] << " x " << first[1] << " x " << first[2]
           << ": all realizations must share one grid shape.";
+  }
+}
+
+// The grid's points against MaximumNumberOfGridPoints, counted in double:
+// extents of field data reach 2^30 a side, whose product no integer holds.
+void CheckGridSize(const int* dims, bool fromFieldData, vtkIdType maximum, std::ostringstream& error)
+{
+  const double points = static_cast<double>(dims[0]) * dims[1] * dims[2];
+  if (points > static_cast<double>(maximum))
+  {
+    error << "Cannot analyze the grid: the " << dims[0] << " x " << dims[1] << " x " << dims[2]
+          << " grid" << (fromFieldData ? " of the SamplingGridExtent field data" : "") << " has "
+          << points << " points, more than MaximumNumberOfGridPoints (" << maximum << ").";
+  }
+}
+
+// Runs step(), which returns false with `error` when it fails; a failed
+// allocation inside it (std::bad_alloc) is such a failure too, so that a grid
+// too large for the memory ends in an error and empty outputs, not an abort.
+template <typename Step>
+bool Guarded(std::string& error, Step step)
+{
+  try
+  {
+    return step();
+  }
+  catch (const std::bad_alloc&)
+  {
+    error = "out of memory";
+    return false;
   }
 }
 
@@ -668,7 +699,7 @@ int vtkBlueNoiseSpectrum::RequestData(
 
   vtkBlueNoiseSpectrumKernel::Result result;
   std::string error;
-  if (!kernel.Compute(result, &error))
+  if (!Guarded(error, [&] { return kernel.Compute(result, &error); }))
   {
     vtkErrorMacro("Cannot compute the spectrum: " << error << ".");
     return 0;
@@ -879,6 +910,12 @@ bool vtkBlueNoiseSpectrum::BuildGrids(std::vector<Realization>& realizations)
   {
     CheckShape(realizations[i].Grid.Dimensions, realizations[0].Grid.Dimensions, i, error);
   }
+  if (error.tellp() == 0)
+  {
+    const Realization& first = realizations[0];
+    CheckGridSize(first.Grid.Dimensions, first.Kind == SignalKind::Points && !first.GridFromBounds,
+      this->MaximumNumberOfGridPoints, error);
+  }
   if (error.tellp() != 0)
   {
     vtkErrorMacro(<< error.str());
@@ -894,8 +931,8 @@ int vtkBlueNoiseSpectrum::Accumulate(
   // Only the root process transforms, so only it needs the kernel's buffers.
   const int* dims = realizations[0].Grid.Dimensions;
   std::string error;
-  const bool ready =
-    !this->IsRootProcess() || kernel.SetDimensions(dims[0], dims[1], dims[2], &error);
+  const bool ready = !this->IsRootProcess() ||
+    Guarded(error, [&] { return kernel.SetDimensions(dims[0], dims[1], dims[2], &error); });
   if (!ready)
   {
     vtkErrorMacro("Cannot analyze the grid: " << error << ".");
@@ -937,26 +974,32 @@ bool vtkBlueNoiseSpectrum::AddRealization(
   bool ok = true;
   if (r.Kind == SignalKind::ImageArray && !this->IsDistributed())
   {
-    ok = AddImageArray(kernel, r.Array, error);
+    ok = Guarded(error, [&] { return AddImageArray(kernel, r.Array, error); });
   }
   else
   {
     // This process's samples, then every process's on the root process.
     Samples samples;
     auto image = vtkImageData::SafeDownCast(r.Data);
-    if (r.Kind == SignalKind::ImageArray && image)
-    {
-      ImageArraySamples(image, r.Array, r.Whole.CellArray, r.Whole.ImageExtent, samples);
-    }
-    else if (r.Kind == SignalKind::WeightedPoints && image)
-    {
-      ok = BinImageCentres(
-        image, r.Array, r.Whole.CellArray, r.Whole.ImageExtent, r.Grid, samples, error);
-    }
-    else if (auto points = vtkPointSet::SafeDownCast(r.Data))
-    {
-      BinPoints(points, r.Grid, samples);
-    }
+    auto points = vtkPointSet::SafeDownCast(r.Data);
+    ok = Guarded(error,
+      [&]
+      {
+        if (r.Kind == SignalKind::ImageArray && image)
+        {
+          ImageArraySamples(image, r.Array, r.Whole.CellArray, r.Whole.ImageExtent, samples);
+        }
+        else if (r.Kind == SignalKind::WeightedPoints && image)
+        {
+          return BinImageCentres(
+            image, r.Array, r.Whole.CellArray, r.Whole.ImageExtent, r.Grid, samples, error);
+        }
+        else if (points)
+        {
+          BinPoints(points, r.Grid, samples);
+        }
+        return true;
+      });
     if (!ok)
     {
       vtkErrorMacro("Realization " << index << ": " << error << ".");
@@ -967,7 +1010,8 @@ bool vtkBlueNoiseSpectrum::AddRealization(
       return false;
     }
     std::copy(samples.Counters, samples.Counters + 2, counters);
-    ok = !this->IsRootProcess() || AddGathered(kernel, r.Kind, r.Grid.Size(), samples, error);
+    ok = !this->IsRootProcess() ||
+      Guarded(error, [&] { return AddGathered(kernel, r.Kind, r.Grid.Size(), samples, error); });
   }
   if (!ok)
   {
@@ -995,6 +1039,7 @@ void vtkBlueNoiseSpectrum::PrintSelf(ostream& os, vtkIndent indent)
      << this->GridBounds[5] << "\n";
   os << indent << "UseGridBounds: " << this->UseGridBounds << "\n";
   os << indent << "GenerateSpectrumImage: " << this->GenerateSpectrumImage << "\n";
+  os << indent << "MaximumNumberOfGridPoints: " << this->MaximumNumberOfGridPoints << "\n";
   os << indent << "NumberOfTransformedRealizations: " << this->NumberOfTransformedRealizations
      << "\n";
 }

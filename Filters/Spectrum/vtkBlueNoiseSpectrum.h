@@ -55,8 +55,10 @@
  * without points or with N = 0 inside the grid, no or a multi-component array,
  * an input grid with a dimension below 2, realizations of different grid
  * shapes, negative or non-finite counts, malformed SamplingGrid field data, a
- * singular direction matrix. A mask with every voxel set (g = 1) has no power off DC: a warning,
- * and L = 0, anisotropy 0, S = 1 by convention.
+ * singular direction matrix, a grid of more than MaximumNumberOfGridPoints
+ * points, memory that cannot be allocated (std::bad_alloc is caught). A mask
+ * with every voxel set (g = 1) has no power off DC: a warning, and L = 0,
+ * anisotropy 0, S = 1 by convention.
  *
  * Pipeline: the whole spectrum needs every realization in full, so the filter
  * asks for the whole extent and piece 0 of 1 of its inputs (each process of a
@@ -148,6 +150,19 @@ public:
 
   ///@{
   /**
+   * The largest analysis grid, in grid points (Lx Ly Lz), that the filter
+   * transforms: a larger one, whichever rule gave it, is an error before
+   * anything is allocated. Memory grows by about 8 bytes a grid point (see
+   * Memory above), and a point set's field data may declare any extent up to
+   * 2^30 a side. Default 1024^3 (2^30: about 8.6 GB for the transform); at
+   * least 8.
+   */
+  vtkSetClampMacro(MaximumNumberOfGridPoints, vtkIdType, 8, VTK_ID_MAX);
+  vtkGetMacro(MaximumNumberOfGridPoints, vtkIdType);
+  ///@}
+
+  ///@{
+  /**
    * Produce the centered power spectrum image on output port 1. Default on.
    */
   vtkSetMacro(GenerateSpectrumImage, bool);
@@ -219,6 +234,7 @@ protected:
   double GridBounds[6] = { 0.0, 1.0, 0.0, 1.0, 0.0, 1.0 };
   bool UseGridBounds = false;
   bool GenerateSpectrumImage = true;
+  vtkIdType MaximumNumberOfGridPoints = vtkIdType(1) << 30;
   int NumberOfTransformedRealizations = 0;
 
 private:

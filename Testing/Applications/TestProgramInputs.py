@@ -245,6 +245,52 @@ def nifti_datatype_beyond_bitpix(ctx):
 
 
 @case
+def nifti_unknown_datatype(ctx):
+    # VTK 9.2's vtkNIFTIImageReader looks the datatype up past the end of its
+    # table when it does not know it, and crashes (found by the loader fuzzer):
+    # a code NIfTI does not define, and NIfTI's float128, which VTK does not read.
+    path = write(ctx.path('datatype.nii'), nifti_header((4, 4, 4), datatype=-27902) + ramp(64))
+    expect_file_error(ctx, path, 'datatype -27902 is not one')
+    path = write(ctx.path('float128.nii'), nifti_header((4, 4, 4), datatype=1536, bitpix=128)
+                 + ramp(1024))
+    expect_file_error(ctx, path, 'datatype 1536 is not one')
+
+
+@case
+def nifti_magic_against_sizeof_hdr(ctx):
+    # A valid NIfTI-1 header carrying NIfTI-2's magic at byte 4: VTK's reader
+    # goes by the magic and reads a NIfTI-2 header, whose datatype here is unknown.
+    h = bytearray(nifti_header((4, 4, 4)))
+    h[4:12] = b'n+2\0\r\n\x1a\n'
+    struct.pack_into('<h', h, 12, -27902)
+    path = write(ctx.path('magic.nii'), bytes(h) + ramp(256))
+    expect_file_error(ctx, path, 'sizeof_hdr is 348 but the magic says NIfTI-2')
+
+
+@case
+def nifti_row_beyond_int(ctx):
+    # Rows of 2^31 - 1 voxels of two uint8 components: VTK's reader counts a
+    # row's bytes in an int.
+    path = write(ctx.path('row.nii'), nifti2_header((2**31 - 1, 1, 1, 1, 2)) + ramp(64))
+    expect_file_error(ctx, path, 'more than VTK\'s NIfTI reader reads')
+
+
+@case
+def nifti_header_image_pair(ctx):
+    # A .hdr/.img pair (magic ni1, data from byte 0 of the .img) loads.
+    h = bytearray(nifti_header((8, 8, 8), vox_offset=0.0)[:348])
+    h[344:348] = b'ni1\0'
+    write(ctx.path('pair.img'), ramp(512))
+    p = ctx.sample(write(ctx.path('pair.hdr'), bytes(h)), '--points', 50)
+    check(p.returncode == 0, 'exit status %d, expected 0' % p.returncode)
+    check(ctx.summary(p)['voxels'] == '512', 'not the 512 voxels of the .img')
+    # Its .img shorter than the header declares.
+    shutil.rmtree(ctx.out)
+    write(ctx.path('short.img'), ramp(500))
+    expect_file_error(ctx, write(ctx.path('short.hdr'), bytes(h)), 'has only 500 bytes')
+
+
+@case
 def metaimage_missing_data_file(ctx):
     path = metaimage(ctx.path('missing.mhd'), (8, 8, 8), 'missing.raw')
     expect_file_error(ctx, path, 'missing.raw', 'No such file')

@@ -1,12 +1,15 @@
 # SPDX-FileCopyrightText: Copyright (c) 2025-2026 the BlueNoiseSampling contributors
 # SPDX-License-Identifier: BSD-3-Clause
 bluenoise_add_test(TestErrorDiffusionParameterTable LABELS sampler)
+bluenoise_add_test(TestErrorDiffusionChargeCurve LABELS sampler threads)
+bluenoise_add_test(TestSamplingBudget LABELS sampler)
 bluenoise_add_test(TestErrorDiffusionSamplerCounts LABELS sampler)
 bluenoise_add_test(TestBlueNoiseRelaxation LABELS sampler)
 bluenoise_add_test(TestErrorDiffusionSamplerDeterminism LABELS sampler threads)
 bluenoise_add_test(TestErrorDiffusionScanGeometry LABELS sampler)
 bluenoise_add_test(TestErrorDiffusionLayerRunner LABELS sampler threads)
 bluenoise_add_test(TestErrorDiffusionSamplerGeometry LABELS sampler LIBS VTK::CommonTransforms VTK::CommonMath)
+bluenoise_add_test(TestErrorDiffusionSamplerMaskCorrection LABELS sampler)
 bluenoise_add_test(TestErrorDiffusionSamplerAttributes LABELS sampler)
 bluenoise_add_test(TestErrorDiffusionSamplerBadInput LABELS sampler)
 bluenoise_add_test(TestErrorDiffusionSamplerBrain LABELS sampler data LIBS VTK::IOImage VTK::vtksys)

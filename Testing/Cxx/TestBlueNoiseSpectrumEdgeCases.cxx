@@ -1,8 +1,9 @@
 // SPDX-FileCopyrightText: Copyright (c) 2025-2026 the BlueNoiseSampling contributors
 // SPDX-License-Identifier: BSD-3-Clause
 // Edge cases of the kernel and the filter: a non-cubic grid, bad input (clear
-// errors, empty outputs, unchanged state), a single point through the filter
-// and a full mask (g = 1: a warning, no NaN anywhere).
+// errors, empty outputs, unchanged state), grids beyond MaximumNumberOfGridPoints
+// or the memory, a single point through the filter and a full mask (g = 1: a
+// warning, no NaN anywhere).
 #include "TestBlueNoiseSpectrumUtilities.h"
 
 #include "vtkBlueNoiseSpectrum.h"
@@ -23,6 +24,14 @@
 
 using namespace spectrum_test;
 using bluenoise_test::MessageObserver;
+
+// Under AddressSanitizer an impossible allocation fails as it does without it
+// (a null pointer or std::bad_alloc) instead of ending the program: the
+// filter's handling of that failure is what GridLimits tests.
+extern "C" const char* __asan_default_options()
+{
+  return "allocator_may_return_null=1";
+}
 
 namespace
 {
@@ -289,6 +298,84 @@ void FilterErrors()
   Check(OutputsEmpty(filter), "all points outside: outputs not empty");
 }
 
+// One point whose sampler field data declare `extent` (origin 0, spacing 1).
+vtkSmartPointer<vtkPolyData> WithSamplingGrid(const double extent[6])
+{
+  auto data = vtkSmartPointer<vtkPolyData>::New();
+  vtkNew<vtkPoints> points;
+  points->InsertNextPoint(0.0, 0.0, 0.0);
+  data->SetPoints(points);
+  const char* names[] = { "SamplingGridOrigin", "SamplingGridSpacing", "SamplingGridExtent" };
+  const double values[2][3] = { { 0, 0, 0 }, { 1, 1, 1 } };
+  for (int a = 0; a < 3; ++a)
+  {
+    vtkNew<vtkDoubleArray> array;
+    array->SetName(names[a]);
+    array->SetNumberOfValues(a == 2 ? 6 : 3);
+    for (vtkIdType i = 0; i < array->GetNumberOfValues(); ++i)
+    {
+      array->SetValue(i, a == 2 ? extent[i] : values[a][i]);
+    }
+    data->GetFieldData()->AddArray(array);
+  }
+  return data;
+}
+
+// Updates a filter on `input` that expects an error with `expected` (empty
+// outputs) or, with `expected` empty, a spectrum.
+void ExpectUpdate(vtkBlueNoiseSpectrum* filter, vtkDataObject* input, const std::string& expected,
+  const std::string& what)
+{
+  vtkNew<MessageObserver> observer;
+  observer->Watch(filter);
+  observer->Watch(filter->GetExecutive());
+  filter->SetInputData(input);
+  filter->Update();
+  if (expected.empty())
+  {
+    Check(observer->Errors.empty() && filter->GetOutput()->GetNumberOfRows() > 0,
+      what + ": expected a spectrum, got '" + observer->Errors + "'");
+    return;
+  }
+  Check(observer->ErrorContains(expected),
+    what + ": expected an error with '" + expected + "', got '" + observer->Errors + "'");
+  Check(OutputsEmpty(filter), what + ": outputs not empty");
+}
+
+// Field data may declare extents up to 2^30 a side, whose grids aborted on
+// their allocation: every grid beyond MaximumNumberOfGridPoints is an error
+// before any allocation, whichever rule gave it, and a grid within the limit
+// that the memory cannot hold is an error too.
+void GridLimits()
+{
+  const std::string beyond = "more than MaximumNumberOfGridPoints";
+  const double wide[6] = { 0, 1073741823, 0, 1, 0, 1 };
+  const double span[6] = { -1073741823, 1073741823, -1073741823, 1073741823, -1073741823,
+    1073741823 };
+  vtkNew<vtkBlueNoiseSpectrum> filter;
+  Check(filter->GetMaximumNumberOfGridPoints() == 1073741824, "the default limit is 1024^3");
+  ExpectUpdate(filter, WithSamplingGrid(wide), beyond, "a 2^30 x 2 x 2 field-data grid");
+  ExpectUpdate(filter, WithSamplingGrid(span), beyond, "a (2^31 - 1)^3 field-data grid");
+
+  // The limit is the property's: an 8^3 grid needs 512.
+  const double small[6] = { 0, 7, 0, 7, 0, 7 };
+  filter->SetMaximumNumberOfGridPoints(511);
+  ExpectUpdate(filter, WithSamplingGrid(small), beyond, "an 8^3 grid at a limit of 511");
+  filter->SetMaximumNumberOfGridPoints(512);
+  ExpectUpdate(filter, WithSamplingGrid(small), "", "an 8^3 grid at a limit of 512");
+  filter->SetGridDimensions(9, 8, 8);
+  filter->UseInputGridOff();
+  ExpectUpdate(filter, WithSamplingGrid(small), beyond, "GridDimensions 9 8 8 at a limit of 512");
+
+  // No limit: a 2^30 x 2^20 x 2 grid (2^54 bytes) the memory cannot hold.
+  const double impossible[6] = { 0, 1073741823, 0, 1048575, 0, 1 };
+  filter->UseInputGridOn();
+  filter->SetMaximumNumberOfGridPoints(VTK_ID_MAX);
+  ExpectUpdate(filter, WithSamplingGrid(impossible), "allocate", "a 2^54-byte grid without limit");
+  // The same filter then measures a small grid.
+  ExpectUpdate(filter, WithSamplingGrid(small), "", "an 8^3 grid after the failures");
+}
+
 void FilterSinglePointAndFullMask()
 {
   // One point, grid from GridDimensions over GridBounds.
@@ -388,6 +475,7 @@ int main()
   KernelErrors();
   FullMask(rng);
   FilterErrors();
+  GridLimits();
   FilterSinglePointAndFullMask();
   GridDimensionsClamp();
   return bluenoise_test::Summary("TestBlueNoiseSpectrumEdgeCases");

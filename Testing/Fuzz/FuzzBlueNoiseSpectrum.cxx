@@ -2,9 +2,11 @@
 // SPDX-License-Identifier: BSD-3-Clause
 // libFuzzer target: vtkBlueNoiseSpectrum on random point sets (duplicates, NaN,
 // huge coordinates, all points on a plane or at one place, the sampler's grid
-// field data with random values) and small images, one to three realizations,
-// with random properties (weight, grid dimensions and bounds, input grid,
-// spectrum image).
+// field data with random values, extents up to 2^30 a side among them) and
+// small images, one to three realizations, with random properties (weight,
+// grid dimensions and bounds, input grid, spectrum image, and a
+// MaximumNumberOfGridPoints of at most 2^18, so that no grid the field data
+// declare is allocated beyond libFuzzer's memory limit).
 //
 // The promises checked: no crash and no sanitizer report; an update that
 // reports an error leaves both outputs empty; one that does not gives finite
@@ -102,6 +104,10 @@ void AddSamplingGrid(FuzzedDataProvider& fdp, vtkPolyData* polyData)
       {
         v = fdp.ConsumeIntegralInRange<int>(-2, 14); // a plausible extent
       }
+      else if (a == 2 && fdp.ConsumeIntegralInRange<int>(0, 3) == 0)
+      {
+        v = fdp.ConsumeIntegralInRange<int>(-(1 << 30), 1 << 30); // whole, but huge
+      }
       array->SetValue(i, v);
     }
     polyData->GetFieldData()->AddArray(array);
@@ -151,6 +157,9 @@ void Configure(FuzzedDataProvider& fdp, vtkBlueNoiseSpectrum* spectrum)
   spectrum->SetGridBounds(bounds);
   spectrum->SetUseGridBounds(fdp.ConsumeBool());
   spectrum->SetGenerateSpectrumImage(fdp.ConsumeBool());
+  // 2^18 when the input is used up (the grids above need at most 16^3).
+  const int shift = fdp.ConsumeIntegralInRange<int>(0, 18);
+  spectrum->SetMaximumNumberOfGridPoints(vtkIdType(1) << (18 - shift));
 }
 
 /// The promises of an update that reported no error: finite figures.
@@ -183,6 +192,7 @@ void CheckGoodUpdate(vtkBlueNoiseSpectrum* spectrum, MessageObserver* observer)
   spectrum->SetUseInputGrid(true);
   spectrum->SetUseGridBounds(false);
   spectrum->SetGridDimensions(16, 16, 16);
+  spectrum->SetMaximumNumberOfGridPoints(4096);
   observer->Reset();
   spectrum->Update();
   Require(observer->NumberOfErrors == 0, "the next good update reports no error", observer->Errors);

@@ -3,8 +3,8 @@
 # The volume loading of the programs (Apps/Common, BlueNoiseApps) on arbitrary
 # bytes; seeds in corpus/FuzzVolumeLoader/ (a .vti with ascii data, a NIfTI-1
 # header and body, a NRRD with inline raw data, a MetaImage with LOCAL data,
-# and the NRRD inputs that crashed or hung vtkNrrdReader before the checks
-# caught them).
+# and the inputs that crashed or hung vtkNrrdReader or vtkNIFTIImageReader
+# before the checks caught them).
 # Runs need LSAN_OPTIONS=suppressions=Testing/Fuzz/VolumeLoader.lsan.supp: VTK
 # 9.2's XML reader leaks an iterator when an array fails to read (a fuzzer
 # finding outside the project's code). Included by Testing/Fuzz/CMakeLists.txt,
@@ -15,9 +15,4 @@ endif ()
 bluenoise_fuzz_instrument(BlueNoiseApps)
 bluenoise_add_fuzzer(FuzzVolumeLoader SOURCES FuzzVolumeLoader.cxx LIBRARIES BlueNoiseApps)
 set_tests_properties(FuzzVolumeLoader PROPERTIES
-  ENVIRONMENT "LSAN_OPTIONS=suppressions=${CMAKE_CURRENT_LIST_DIR}/VolumeLoader.lsan.supp"
-  # Not run by CTest until the NIfTI header check catches what crashes VTK
-  # 9.2's vtkNIFTIImageReader::RequestInformation: the input CI's run found
-  # is crashes/FuzzVolumeLoader-nifti-reader (replay: bin/FuzzVolumeLoader
-  # <that file>). The program is built; run it by hand.
-  DISABLED TRUE)
+  ENVIRONMENT "LSAN_OPTIONS=suppressions=${CMAKE_CURRENT_LIST_DIR}/VolumeLoader.lsan.supp")

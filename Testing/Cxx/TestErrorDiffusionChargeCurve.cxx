@@ -1,0 +1,96 @@
+// SPDX-FileCopyrightText: Copyright (c) 2025-2026 the BlueNoiseSampling contributors
+// SPDX-License-Identifier: BSD-3-Clause
+// The process-wide cache of charge curves (vtkErrorDiffusionChargeCurve::Get):
+// one curve per table and scale, bit for bit (scales equal to 6 digits once
+// shared a curve), the least recently used curve out first when the cache is
+// full while a curve in use stays, and one curve for threads asking at once.
+#include "BlueNoiseTestUtilities.h"
+#include "vtkErrorDiffusionChargeCurve.h"
+#include "vtkErrorDiffusionParameterTable.h"
+
+#include <memory>
+#include <thread>
+#include <vector>
+
+using namespace bluenoise_test;
+
+namespace
+{
+using Curve = std::shared_ptr<vtkErrorDiffusionChargeCurve>;
+
+void OneCurvePerKey()
+{
+  const auto paper = vtkErrorDiffusionParameterTable::Paper();
+  const auto fixed = vtkErrorDiffusionParameterTable::Fixed();
+  const Curve a = vtkErrorDiffusionChargeCurve::Get(paper, 0.3);
+  Check(vtkErrorDiffusionChargeCurve::Get(paper, 0.3) == a, "the same table and scale: one curve");
+  Check(vtkErrorDiffusionChargeCurve::Get(fixed, 0.3) != a, "another table: another curve");
+  // 0.30000049 prints as 0.3 to 6 digits, and is another float.
+  const Curve b = vtkErrorDiffusionChargeCurve::Get(paper, 0.30000049);
+  Check(b != a, "a scale that differs in the 7th digit: another curve");
+  // The curve calibrates for its own scale: as a curve made apart does.
+  vtkErrorDiffusionChargeCurve apart(paper, 0.30000049);
+  for (double g : { 0.01, 0.2 })
+  {
+    Check(b->At(g) == apart.At(g), "the cached curve's charge at g = " + Str(g));
+  }
+}
+
+void LeastRecentlyUsedOut()
+{
+  const auto table = vtkErrorDiffusionParameterTable::Paper();
+  const std::size_t capacity = vtkErrorDiffusionChargeCurve::CacheCapacity;
+  // `kept` is asked for again and again, `old` once; both stay alive here, so
+  // that a new curve cannot take an evicted one's address.
+  const Curve kept = vtkErrorDiffusionChargeCurve::Get(table, 1.0 / 3.0);
+  const Curve old = vtkErrorDiffusionChargeCurve::Get(table, 2.0 / 3.0);
+  std::vector<Curve> others;
+  for (std::size_t i = 0; i < capacity; ++i)
+  {
+    others.push_back(vtkErrorDiffusionChargeCurve::Get(table, 1.0 + 0.001 * static_cast<double>(i)));
+    Check(vtkErrorDiffusionChargeCurve::Get(table, 1.0 / 3.0) == kept,
+      "a curve asked for all along stays (after " + Str(i + 1) + " others)");
+  }
+  Check(vtkErrorDiffusionChargeCurve::Get(table, 2.0 / 3.0) != old,
+    "the least recently used curve went after " + Str(capacity) + " others");
+  Check(vtkErrorDiffusionChargeCurve::Get(table, 1.0 + 0.001 * static_cast<double>(capacity - 1)) ==
+      others.back(),
+    "a recent curve stays");
+}
+
+void ThreadsShareCurves()
+{
+  const auto table = vtkErrorDiffusionParameterTable::Optimized();
+  const int threads = 4;
+  const int keys = 24;
+  std::vector<std::vector<Curve>> got(threads, std::vector<Curve>(keys));
+  std::vector<std::thread> workers;
+  for (int t = 0; t < threads; ++t)
+  {
+    workers.emplace_back(
+      [&got, &table, t]
+      {
+        for (int k = 0; k < keys; ++k)
+        {
+          got[t][k] = vtkErrorDiffusionChargeCurve::Get(table, 0.05 * k);
+        }
+      });
+  }
+  for (auto& worker : workers)
+  {
+    worker.join();
+  }
+  for (int t = 1; t < threads; ++t)
+  {
+    Check(got[t] == got[0], "thread " + Str(t) + " got the curves thread 0 got");
+  }
+}
+}
+
+int main()
+{
+  OneCurvePerKey();
+  LeastRecentlyUsedOut();
+  ThreadsShareCurves();
+  return Summary("TestErrorDiffusionChargeCurve");
+}

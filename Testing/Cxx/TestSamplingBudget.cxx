@@ -1,0 +1,112 @@
+// SPDX-FileCopyrightText: Copyright (c) 2025-2026 the BlueNoiseSampling contributors
+// SPDX-License-Identifier: BSD-3-Clause
+// vtkSamplingBudget, whose buckets live in pages allocated on first use: values
+// over many pages (both signs, tiny to huge, infinities, NaN) give the range
+// and the expected counts a direct sum gives; a histogram reset and reused,
+// a copy, and one serialized and read back are the same histogram bit for
+// bit; merged pieces equal the whole.
+#include "BlueNoiseTestUtilities.h"
+#include "vtkSamplingBudget.h"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <vector>
+
+using namespace bluenoise_test;
+
+namespace
+{
+// Values whose buckets lie on many pages, each value a few times (a bucket
+// of equal values is exact).
+std::vector<double> Values()
+{
+  std::vector<double> values;
+  for (double v : { 1e-30, 3e-7, 0.001, 0.25, 0.5, 1.0, 7.0, 300.0, 65536.0, 1e12, 1e30 })
+  {
+    for (int k = 0; k < 3; ++k)
+    {
+      values.push_back(v);
+      values.push_back(-v);
+    }
+  }
+  return values;
+}
+
+vtkSamplingBudget Histogram(const std::vector<double>& values)
+{
+  vtkSamplingBudget budget;
+  for (double v : values)
+  {
+    budget.Add(v);
+  }
+  return budget;
+}
+
+bool Same(const vtkSamplingBudget& a, const vtkSamplingBudget& b)
+{
+  const std::vector<double> x = a.Serialize();
+  const std::vector<double> y = b.Serialize();
+  return x.size() == y.size() && std::equal(x.begin(), x.end(), y.begin(),
+    [](double p, double q) { return p == q || (std::isnan(p) && std::isnan(q)); });
+}
+}
+
+int main()
+{
+  const std::vector<double> values = Values();
+  vtkSamplingBudget budget = Histogram(values);
+  budget.Add(std::numeric_limits<double>::infinity(), 2.0);
+  budget.Add(-std::numeric_limits<double>::infinity());
+  budget.Add(std::numeric_limits<double>::quiet_NaN());
+  double range[2];
+  Check(budget.GetRange(range) && range[0] == -1e30 && range[1] == 1e30,
+    "the range spans the pages: " + Str(range[0]) + " " + Str(range[1]));
+
+  // Densities x (identity): a small scale keeps every density below 1, so the
+  // expected count is the scale times the sum of the positive values, plus the
+  // two +inf; an infinite scale draws every positive value.
+  double positive = 0.0;
+  int count = 0;
+  for (double v : values)
+  {
+    positive += v > 0.0 ? v : 0.0;
+    count += v > 0.0 ? 1 : 0;
+  }
+  const vtkSamplingBudget::Mapping identity;
+  const double s = 1e-31;
+  const double expected = budget.Expected(s, identity);
+  Check(std::abs(expected - (2.0 + s * positive)) < 1e-12,
+    "expected count at s = 1e-31: " + Str(expected) + ", direct sum " + Str(2.0 + s * positive));
+  const double all = budget.Expected(std::numeric_limits<double>::infinity(), identity);
+  Check(all == count + 2.0, "every positive value drawn: " + Str(all));
+  const auto solution = budget.Solve(10.0, identity);
+  Check(std::abs(solution.Expected - 10.0) < 1e-9 && !solution.OutOfReach,
+    "Solve reaches 10 points: " + Str(solution.Expected));
+
+  // A copy (vtkSMPThreadLocal copies), a read-back and a reused histogram.
+  const vtkSamplingBudget copy = budget;
+  Check(Same(copy, budget), "a copy is the same histogram");
+  vtkSamplingBudget back;
+  Check(back.Deserialize(budget.Serialize()) && Same(back, budget), "serialized and read back");
+  vtkSamplingBudget reused = budget;
+  reused.Reset();
+  Check(!reused.GetRange(range) && reused.Expected(1.0, identity) == 0.0, "a reset histogram is empty");
+  for (double v : { 2.0, 3.0, -5.0 })
+  {
+    reused.Add(v);
+  }
+  Check(Same(reused, Histogram({ 2.0, 3.0, -5.0 })), "a reset histogram reused is a fresh one");
+
+  // Pieces on different pages merged: the whole.
+  const std::vector<double> first(values.begin(), values.begin() + values.size() / 2);
+  const std::vector<double> second(values.begin() + values.size() / 2, values.end());
+  vtkSamplingBudget merged = Histogram(first);
+  merged.Merge(Histogram(second));
+  const vtkSamplingBudget whole = Histogram(values);
+  Check(merged.GetRange(range) && range[0] == -1e30 && range[1] == 1e30, "the merged range");
+  Check(merged.Expected(s, identity) == whole.Expected(s, identity) &&
+      merged.Expected(0.5, identity) == whole.Expected(0.5, identity),
+    "merged pieces expect what the whole does");
+  return Summary("TestSamplingBudget");
+}
