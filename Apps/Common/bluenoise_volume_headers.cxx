@@ -573,6 +573,35 @@ bool Reals(const std::string& text, size_t count, double* values, const char* wh
   }
   return true;
 }
+
+// The data file of a MetaImage header (its own path for LOCAL) and the bytes
+// to skip in it before the values.
+bool MetaImageDataFile(const std::string& path, TextHeader& header, std::string& data,
+  double& skip, std::string& error)
+{
+  auto& f = header.Fields;
+  const std::string file = f["elementdatafile"];
+  if (file.empty() || file == "LIST" || file.find('%') != std::string::npos ||
+    Words(file).size() != 1)
+  {
+    error = "ElementDataFile '" + file + "' is not supported (one data file or LOCAL)";
+    return false;
+  }
+  const bool local = Lower(file) == "local";
+  data = local ? path : Relative(path, file);
+  skip = local ? static_cast<double>(header.Length) : 0.0;
+  if (f.count("headersize"))
+  {
+    double h = 0.0;
+    if (!Reals(f["headersize"], 1, &h, "HeaderSize", error) || !(h >= -1.0))
+    {
+      error = "HeaderSize is '" + f["headersize"] + "'";
+      return false;
+    }
+    skip += std::max(0.0, h);
+  }
+  return true;
+}
 }
 
 bool CheckMetaImage(const std::string& path, Volume& volume, bool& streamable, std::string& error)
@@ -625,27 +654,10 @@ bool CheckMetaImage(const std::string& path, Volume& volume, bool& streamable, s
     return false;
   }
   d.Compressed = Lower(f["compresseddata"]) == "true";
-  const std::string file = f["elementdatafile"];
-  if (file.empty() || file == "LIST" || file.find('%') != std::string::npos ||
-    Words(file).size() != 1)
-  {
-    error = "ElementDataFile '" + file + "' is not supported (one data file or LOCAL)";
-    return false;
-  }
-  const bool local = Lower(file) == "local";
-  const std::string data = local ? path : Relative(path, file);
-  double skip = local ? static_cast<double>(header.Length) : 0.0;
-  if (f.count("headersize"))
-  {
-    double h = 0.0;
-    if (!Reals(f["headersize"], 1, &h, "HeaderSize", error) || !(h >= -1.0))
-    {
-      error = "HeaderSize is '" + f["headersize"] + "'";
-      return false;
-    }
-    skip += std::max(0.0, h);
-  }
-  if (!DataFileSize(data, skip, d.Available, error))
+  std::string data;
+  double skip = 0.0;
+  if (!MetaImageDataFile(path, header, data, skip, error) ||
+    !DataFileSize(data, skip, d.Available, error))
   {
     return false;
   }

@@ -542,9 +542,11 @@ void vtkErrorDiffusionKernel::FindInterior(const float* density, const float* ne
 //------------------------------------------------------------------------------
 // The scan of one layer. Record keeps what each voxel received (for
 // MeasureReceivedError) and costs a store per voxel, so it is a template
-// flag. Rows away from the faces of a layer whose voxels and successors are
-// all active take a path without any test on the targets: that is the bulk
-// of the work on any large support, and the tests cost a third of the time.
+// flag. Voxels away from the faces of a layer whose voxels and successors
+// are all active, and in other layers the voxels whose 3x3 neighborhood is
+// active in both (FindInterior), take a path without any test on the
+// targets: that is the bulk of the work on any large support, and the tests
+// cost a third of the time. The others go through SpreadAtFace.
 template <bool Record>
 vtkIdType vtkErrorDiffusionKernel::ScanLayer(
   const float* density, const float* next, unsigned char* mask, int layer)
@@ -572,7 +574,6 @@ vtkIdType vtkErrorDiffusionKernel::ScanLayer(
   float carry = this->Carry;
   float cachedG = -1.0f;
   float w[6] = { 0, 0, 0, 0, 0, 0 };
-  float wSum = 0.0f;       // SpreadAtFace's sum of the weights when every target is active
   float base = 0.5f;       // 0.5 - C(g) below g = 0.5, 0.5 + C(1 - g) above
   float modulation = 0.0f; // s * m(g), negative above g = 0.5 (the mirrored process)
   vtkIdType count = 0;
@@ -602,7 +603,6 @@ vtkIdType vtkErrorDiffusionKernel::ScanLayer(
       {
         const LevelParameters lp = this->ParametersOf(g);
         std::copy(lp.Weights, lp.Weights + 6, w);
-        wSum = ((((w[0] + w[1]) + w[2]) + w[3]) + w[4]) + w[5];
         base = lp.Base;
         modulation = lp.Modulation;
         cachedG = g;
@@ -620,9 +620,9 @@ vtkIdType vtkErrorDiffusionKernel::ScanLayer(
       mask[idx] = b;
       count += b;
       const float e = value - static_cast<float>(b);
+      --reservoir.Remaining;
       if (fast)
       {
-        --reservoir.Remaining;
         // value * w - b * w: the product does not wait for the comparison.
         const float taken = value >= threshold ? w[TARGET_U] : 0.0f;
         carry = value * w[TARGET_U] - taken;
@@ -633,27 +633,12 @@ vtkIdType vtkErrorDiffusionKernel::ScanLayer(
         nxt[idx] += e * w[TARGET_Z];
         continue;
       }
-      --reservoir.Remaining;
       const bool valid[6] = { hasNextU && Active(density[idx + d]),
         hasPrevU && hasNextRow && Active(density[idx - d + V]),
         hasNextRow && Active(density[idx + V]),
         hasPrevRow && nextLayerExists && Active(next[idx - V]),
         hasPrevU && nextLayerExists && Active(next[idx - d]),
         nextLayerExists && Active(next[idx]) };
-      if (valid[0] && valid[1] && valid[2] && valid[3] && valid[4] && valid[5] && wSum > 0.0f)
-      {
-        // Inside a support with inactive voxels elsewhere in the layer (any
-        // real volume): SpreadAtFace's arithmetic when every target is
-        // active, without the call.
-        const float f = wSum == 1.0f ? e : e / wSum;
-        cur[idx - d + V] += f * w[TARGET_BACK_V];
-        cur[idx + V] += f * w[TARGET_V];
-        nxt[idx - V] += f * w[TARGET_Z_BACKV];
-        nxt[idx - d] += f * w[TARGET_Z_BACKU];
-        nxt[idx] += f * w[TARGET_Z];
-        carry = f * w[TARGET_U];
-        continue;
-      }
       carry = this->SpreadAtFace(e, w, valid, idx, d, V, &reservoir);
     }
   }

@@ -49,10 +49,15 @@ constexpr vtkIdType MinimumVoxelsForWorkerThread = 32768;
 // and ParaView default to it) always says one; there VTK_SMP_MAX_THREADS, or
 // else the hardware, decides, so that a stock ParaView is not held to one
 // core while VTK_SMP_MAX_THREADS=1 still is.
+bool SequentialBackend()
+{
+  const char* backend = vtkSMPTools::GetBackend();
+  return backend && std::string(backend) == "Sequential";
+}
+
 int AvailableThreads()
 {
-  const std::string backend = vtkSMPTools::GetBackend() ? vtkSMPTools::GetBackend() : "";
-  if (backend != "Sequential")
+  if (!SequentialBackend())
   {
     return vtkSMPTools::GetEstimatedNumberOfThreads();
   }
@@ -561,8 +566,7 @@ bool vtkErrorDiffusionSampler::CollectStatistics(
   // A few million values at a time, to report progress and honor abort;
   // split over threads of its own where vtkSMPTools' backend would not.
   const int chunk = static_cast<int>(std::max<vtkIdType>(1, (vtkIdType(1) << 22) / layer));
-  const char* backend = vtkSMPTools::GetBackend();
-  const int threads = backend && std::string(backend) == "Sequential" ? AvailableThreads() : 1;
+  const int threads = SequentialBackend() ? AvailableThreads() : 1;
   for (int z = step.First; z <= step.Last; z += chunk)
   {
     const int last = std::min(step.Last, z + chunk - 1);
