@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstring>
 
 namespace
 {
@@ -32,20 +33,22 @@ std::uint64_t Hash(std::uint64_t seed, int x, int y, int z)
   return h ^ (h >> 31);
 }
 
-// Bit i for byte i != 0, of n <= 64 bytes; eight at a time, branch-free, for
-// the compiler to vectorize.
+// Bit i for byte i != 0, of n <= 64 bytes; eight at a time: the high bit of
+// each byte set when the byte is not 0, then the eight high bits gathered
+// into the top byte by one multiplication (little-endian loads).
 std::uint64_t PackBits(const unsigned char* bytes, int n)
 {
+  constexpr std::uint64_t low7 = 0x7F7F7F7F7F7F7F7FULL;
+  constexpr std::uint64_t high = 0x8080808080808080ULL;
+  constexpr std::uint64_t gather = 0x0102040810204080ULL;
   std::uint64_t bits = 0;
   int i = 0;
   for (; i + 8 <= n; i += 8)
   {
-    unsigned int byte = 0;
-    for (int k = 0; k < 8; ++k)
-    {
-      byte |= static_cast<unsigned int>(bytes[i + k] != 0) << k;
-    }
-    bits |= static_cast<std::uint64_t>(byte) << i;
+    std::uint64_t v;
+    std::memcpy(&v, bytes + i, 8);
+    const std::uint64_t nonzero = (((v & low7) + low7) | v) & high;
+    bits |= (((nonzero >> 7) * gather) >> 56) << i;
   }
   for (; i < n; ++i)
   {
@@ -77,13 +80,17 @@ void vtkBlueNoiseRelaxation::Begin(int nx, int ny, int firstZ, std::uint64_t see
 {
   this->NX = std::max(nx, 0);
   this->NY = std::max(ny, 0);
-  this->WordsPerRow = (this->NX + 63) / 64 + 1; // a spare word: reads may run one past
+  // A zero word on either side of a row: the window reads 32 voxels to
+  // either side of a sample, and up to one word past the last.
+  this->WordsPerRow = (this->NX + 63) / 64 + 2;
   this->First = firstZ;
   this->Last = firstZ - 1;
   this->Relaxed = firstZ;
   this->Finalized = firstZ;
   this->Seed = seed;
   this->Moves = 0;
+  this->LastDensity = -1.0f;
+  this->Rows.clear(); // their word offsets are for one row length
   const size_t layer = static_cast<size_t>(this->NX) * this->NY;
   const size_t words = static_cast<size_t>(this->WordsPerRow) * (this->NY + 2 * PadRows);
   this->NoSamples.assign(words, 0);
@@ -129,10 +136,16 @@ inline vtkBlueNoiseRelaxation::Plane* vtkBlueNoiseRelaxation::FindPlane(int z)
 }
 
 //------------------------------------------------------------------------------
-// The words of row y (-PadRows <= y < NY + PadRows) of a layer's bits.
+// The words of row y (-PadRows <= y < NY + PadRows) of a layer's bits; the
+// word before the first is there (zero).
 inline const std::uint64_t* vtkBlueNoiseRelaxation::Row(const std::uint64_t* bits, int y) const
 {
-  return bits + static_cast<std::ptrdiff_t>(y + PadRows) * this->WordsPerRow;
+  return bits + this->RowStart(y);
+}
+
+inline std::ptrdiff_t vtkBlueNoiseRelaxation::RowStart(int y) const
+{
+  return static_cast<std::ptrdiff_t>(y + PadRows) * this->WordsPerRow + 1;
 }
 
 //------------------------------------------------------------------------------
@@ -140,13 +153,6 @@ inline bool vtkBlueNoiseRelaxation::Sample(int x, int y, int z)
 {
   const Slot* slot = this->Find(z);
   return slot && (this->Row(slot->Bits.data(), y)[x >> 6] >> (x & 63)) & 1;
-}
-
-//------------------------------------------------------------------------------
-inline float vtkBlueNoiseRelaxation::DensityAt(int x, int y, int z)
-{
-  const Plane* plane = this->FindPlane(z);
-  return plane ? plane->Density[x + static_cast<size_t>(this->NX) * y] : 0.0f;
 }
 
 //------------------------------------------------------------------------------
@@ -161,86 +167,105 @@ inline void vtkBlueNoiseRelaxation::Set(int x, int y, int z, bool sample)
 }
 
 //------------------------------------------------------------------------------
-// The rows (dz, dy) within `radius`, nearest first, for NearestSquared.
-void vtkBlueNoiseRelaxation::SetRadius(int radius)
+// The limit, search radius and cap of density g, and the rows searched
+// (real volumes repeat densities: the roots and rows are kept while g is).
+void vtkBlueNoiseRelaxation::SetDensity(float g)
 {
-  if (radius == this->Radius && !this->Rows.empty())
+  if (g == this->LastDensity)
+  {
+    return;
+  }
+  this->LastDensity = g;
+  const double spacing = std::cbrt(1.0 / g);
+  this->Limit = 0.75 * spacing * spacing;
+  // Clamped before the conversion to int: tiny densities have a huge spacing.
+  const int radius = static_cast<int>(
+    std::min(std::ceil(0.87 * spacing) + 1.0, static_cast<double>(MaximumRadius)));
+  // Only whether a sample is nearer than the limit matters, and nothing beyond
+  // the radius can be found.
+  const int cap = static_cast<int>(
+    std::min(std::ceil(this->Limit), static_cast<double>((radius + 1) * (radius + 1))));
+  if (radius == this->Radius && cap == this->Cap && !this->Rows.empty())
   {
     return;
   }
   this->Radius = radius;
+  this->Cap = cap;
   this->Rows.clear();
   for (int dz = -radius; dz <= radius; ++dz)
   {
     for (int dy = -radius; dy <= radius; ++dy)
     {
-      this->Rows.push_back({ dz, dy, dz * dz + dy * dy });
+      if (dz * dz + dy * dy < cap)
+      {
+        this->Rows.push_back({ dz, dy, dz * dz + dy * dy, dy * this->WordsPerRow });
+      }
     }
   }
   std::stable_sort(this->Rows.begin(), this->Rows.end(),
     [](const RowOffset& a, const RowOffset& b) { return a.Squared < b.Squared; });
+  // The rows a face neighbor's search reads that the sample's does not.
+  this->Around.clear();
+  for (int dz = -radius - 1; dz <= radius + 1; ++dz)
+  {
+    for (int dy = -radius - 1; dy <= radius + 1; ++dy)
+    {
+      auto searched = [&](int z, int y) {
+        return std::abs(z) <= radius && std::abs(y) <= radius && z * z + y * y < cap;
+      };
+      if (!searched(dz, dy) &&
+        (searched(dz - 1, dy) || searched(dz + 1, dy) || searched(dz, dy - 1) ||
+          searched(dz, dy + 1)))
+      {
+        this->Around.push_back({ dz, dy, dz * dz + dy * dy, dy * this->WordsPerRow });
+      }
+    }
+  }
 }
 
 //------------------------------------------------------------------------------
-// The squared distance from (x, y, z) to the nearest sample other than the
-// `except` voxel within Radius along each axis, or `best` when none is
-// nearer than that; as soon as one is found at `enough` or nearer, that one.
-// Rows are visited nearest first, and no further once they cannot hold
-// anything nearer than the best so far.
-int vtkBlueNoiseRelaxation::NearestSquared(
-  int x, int y, int z, int best, int enough, int exceptX, int exceptY, int exceptZ)
+// Copies `rows` around (x, y) of the layers in Layers into the window: bit k of
+// a row is voxel x - 32 + k (zero outside the volume).
+void vtkBlueNoiseRelaxation::Load(const std::vector<RowOffset>& rows, int x, int y)
 {
-  const int radius = this->Radius;
-  // Only the layers that can hold a sample nearer than `best`.
-  int reach = 0;
-  while (reach < radius && (reach + 1) * (reach + 1) < best)
+  const int start = x - 32; // from -32: the word before the first is zero
+  const int shift = start & 63;
+  const std::ptrdiff_t word = this->RowStart(y) + (start >> 6);
+  for (const RowOffset& row : rows)
   {
-    ++reach;
+    const std::uint64_t* words = this->Layers[row.DZ + Reach] + word + row.Words;
+    // The second word's part in two shifts: one by 64 - shift would be
+    // undefined for shift = 0.
+    this->Window[(row.DZ + Reach) * Span + row.DY + Reach] =
+      (words[0] >> shift) | ((words[1] << 1) << (63 - shift));
   }
-  const std::uint64_t* layers[2 * MaximumRadius + 1];
-  for (int dz = -reach; dz <= reach; ++dz)
-  {
-    const Slot* slot = this->Find(z + dz);
-    layers[dz + radius] = slot ? slot->Bits.data() : this->NoSamples.data();
-  }
-  const int x0 = std::max(0, x - radius);
-  const int x1 = std::min(this->NX - 1, x + radius);
-  const int shift = x0 & 63;
-  const std::uint64_t width = (std::uint64_t(1) << (x1 - x0 + 1)) - 1;
+}
+
+//------------------------------------------------------------------------------
+// The squared distance from the voxel at offset (fx, fy, fz) of the window's
+// center to the nearest sample in the window within Radius along each axis,
+// or Cap when none is nearer; as soon as one at `enough` or nearer is found,
+// that one. Rows are visited nearest first, and no further once they cannot
+// hold anything nearer than the best so far. In a row, the nearest sample is
+// the nearer of the first set bits on either side of the voxel (a sentinel
+// bit at Radius + 1 stands for none).
+int vtkBlueNoiseRelaxation::Nearest(int fx, int fy, int fz, int enough) const
+{
+  const int center = 32 + fx;
+  const std::uint64_t right = std::uint64_t(1) << (this->Radius + 1);
+  const std::uint64_t left = std::uint64_t(1) << (62 - this->Radius);
+  const std::uint64_t* window = this->Window + (fz + Reach) * Span + fy + Reach;
+  int best = this->Cap;
   for (const RowOffset& row : this->Rows)
   {
-    if (row.Squared >= best)
+    if (row.Squared >= best || best <= enough)
     {
       break;
     }
-    const int Y = y + row.DY;
-    // The bits x0..x1 of the row: at most 17, in at most two words.
-    const std::uint64_t* words = this->Row(layers[row.DZ + radius], Y) + (x0 >> 6);
-    std::uint64_t bits = words[0] >> shift;
-    if (shift)
-    {
-      bits |= words[1] << (64 - shift);
-    }
-    for (bits &= width; bits; bits &= bits - 1)
-    {
-      const int X = x0 + __builtin_ctzll(bits);
-      if (X == exceptX && Y == exceptY && z + row.DZ == exceptZ)
-      {
-        continue;
-      }
-      const int d = (X - x) * (X - x) + row.Squared;
-      if (d < best)
-      {
-        best = d;
-        this->Nearest[0] = X - x;
-        this->Nearest[1] = row.DY;
-        this->Nearest[2] = row.DZ;
-      }
-      if (best <= enough)
-      {
-        return best;
-      }
-    }
+    const std::uint64_t bits = window[row.DZ * Span + row.DY];
+    const int dx = std::min(
+      __builtin_ctzll((bits >> center) | right), __builtin_clzll((bits << (63 - center)) | left));
+    best = std::min(best, dx * dx + row.Squared);
   }
   return best;
 }
@@ -248,27 +273,15 @@ int vtkBlueNoiseRelaxation::NearestSquared(
 //------------------------------------------------------------------------------
 void vtkBlueNoiseRelaxation::RelaxSample(int x, int y, int z, float g)
 {
-  if (g != this->LastDensity) // real volumes repeat densities: spare the roots
-  {
-    const double spacing = std::cbrt(1.0 / g);
-    this->Limit = 0.75 * spacing * spacing;
-    // Clamped before the conversion to int: tiny densities have a huge spacing.
-    this->SetRadius(static_cast<int>(
-      std::min(std::ceil(0.87 * spacing) + 1.0, static_cast<double>(MaximumRadius))));
-    this->LastDensity = g;
-  }
-  // Only whether p has a sample nearer than the limit matters here (nothing
-  // beyond the search radius can be found).
-  const int cap = static_cast<int>(std::min(
-    std::ceil(this->Limit), static_cast<double>((this->Radius + 1) * (this->Radius + 1))));
-  const int current = this->NearestSquared(x, y, z, cap, -1, x, y, z);
+  this->SetDensity(g);
+  this->Load(this->Rows, x, y);
+  this->Window[Reach * Span + Reach] &= ~(std::uint64_t(1) << 32); // not its own neighbor
+  const int current = this->Nearest(0, 0, 0, -1);
   if (current >= this->Limit)
   {
     return;
   }
-  // A face f towards that nearest sample v (f . v >= 1) comes nearer to it
-  // (|v - f|^2 = |v|^2 - 2 f . v + 1 < |v|^2): it cannot win.
-  const int toward[3] = { this->Nearest[0], this->Nearest[1], this->Nearest[2] };
+  this->Load(this->Around, x, y);
   // The six faces in a hashed order (Fisher-Yates on the hash's bits).
   std::uint64_t h = Hash(this->Seed ^ 0x5DEECE66DULL, x, y, z);
   int order[6] = { 0, 1, 2, 3, 4, 5 };
@@ -284,31 +297,26 @@ void vtkBlueNoiseRelaxation::RelaxSample(int x, int y, int z, float g)
   for (const int face : order)
   {
     const int* f = Faces[face];
-    // That sample is at |v - f|^2 from the candidate: no farther can it be.
-    const int bound = std::min(
-      cap, current - 2 * (f[0] * toward[0] + f[1] * toward[1] + f[2] * toward[2]) + 1);
-    if (bound <= best)
+    const int X = x + f[0], Y = y + f[1];
+    const float* density = this->Densities[f[2] + 1];
+    const std::uint64_t row = this->Window[(f[2] + Reach) * Span + f[1] + Reach];
+    if (X < 0 || X >= this->NX || Y < 0 || Y >= this->NY || !density ||
+      ((row >> (32 + f[0])) & 1))
     {
       continue;
     }
-    const int X = x + f[0], Y = y + f[1], Z = z + f[2];
-    if (X < 0 || X >= this->NX || Y < 0 || Y >= this->NY || Z < this->Finalized ||
-      !this->FindPlane(Z) || this->Sample(X, Y, Z))
-    {
-      continue;
-    }
-    const float gc = this->DensityAt(X, Y, Z);
+    const float gc = density[X + static_cast<size_t>(this->NX) * Y];
     if (!Relaxable(gc) || std::abs(gc - g) > DensityTolerance * g)
     {
       continue;
     }
     // A candidate with a sample as near as the best so far cannot win.
-    const int d = this->NearestSquared(X, Y, Z, bound, best, x, y, z);
+    const int d = this->Nearest(f[0], f[1], f[2], best);
     if (d > best)
     {
       best = d;
       target = face;
-      if (best >= cap)
+      if (best >= this->Cap)
       {
         break;
       }
@@ -325,27 +333,61 @@ void vtkBlueNoiseRelaxation::RelaxSample(int x, int y, int z, float g)
 }
 
 //------------------------------------------------------------------------------
-// Asks the cache for what RelaxSample will read around voxel i of layer z.
-void vtkBlueNoiseRelaxation::Prefetch(size_t i, int z)
+// Asks the cache for what RelaxLayer and RelaxSample will read around voxel
+// (x, y) of layer z: the densities of 11 layers do not fit in the second
+// level cache of 2 MiB at 256^2 voxels a layer.
+void vtkBlueNoiseRelaxation::Prefetch(int x, int y, int z)
 {
-  const int x = static_cast<int>(i % this->NX), y = static_cast<int>(i / this->NX);
   const int reach = 2; // the rows of the nearest neighbors at the densities that cost most
+  const std::ptrdiff_t word = this->RowStart(y) + (x >> 6);
   for (int dz = -reach; dz <= reach; ++dz)
   {
-    const Slot* slot = this->Find(z + dz);
-    if (!slot)
-    {
-      continue;
-    }
     for (int dy = -reach; dy <= reach; ++dy)
     {
-      __builtin_prefetch(this->Row(slot->Bits.data(), y + dy) + (x >> 6));
+      __builtin_prefetch(this->Layers[dz + Reach] + word + dy * this->WordsPerRow);
     }
-    const Plane* plane = dz >= -1 && dz <= 1 ? this->FindPlane(z + dz) : nullptr;
-    if (plane)
+  }
+  const size_t i = x + static_cast<size_t>(this->NX) * y;
+  for (const float* density : this->Densities) // the candidates' densities
+  {
+    if (density)
     {
-      __builtin_prefetch(plane->Density.data() + i);
+      __builtin_prefetch(density + i);
     }
+  }
+  __builtin_prefetch(this->Densities[1] + (y > 0 ? i - this->NX : i));
+  __builtin_prefetch(this->Densities[1] + (y + 1 < this->NY ? i + this->NX : i));
+  __builtin_prefetch(this->Masks + i);
+  __builtin_prefetch(this->MovedFlags + i);
+}
+
+//------------------------------------------------------------------------------
+// Order by the keys' high 32 bits, ties in the order given: a least
+// significant digit radix sort, a byte a pass.
+void vtkBlueNoiseRelaxation::SortOrder()
+{
+  const size_t n = this->Order.size();
+  size_t counts[4][257] = {};
+  for (const std::uint64_t key : this->Order)
+  {
+    for (int pass = 0; pass < 4; ++pass)
+    {
+      ++counts[pass][((key >> (32 + 8 * pass)) & 0xFF) + 1];
+    }
+  }
+  this->Scratch.resize(n);
+  for (int pass = 0; pass < 4; ++pass)
+  {
+    size_t* start = counts[pass];
+    for (int b = 0; b < 256; ++b)
+    {
+      start[b + 1] += start[b];
+    }
+    for (const std::uint64_t key : this->Order)
+    {
+      this->Scratch[start[(key >> (32 + 8 * pass)) & 0xFF]++] = key;
+    }
+    this->Order.swap(this->Scratch);
   }
 }
 
@@ -360,12 +402,25 @@ void vtkBlueNoiseRelaxation::RelaxLayer(int z)
   {
     return; // no sample may move in this layer, and none into it
   }
+  for (int dz = -Reach; dz <= Reach; ++dz)
+  {
+    const Slot* near = this->Find(z + dz);
+    this->Layers[dz + Reach] = near ? near->Bits.data() : this->NoSamples.data();
+  }
+  for (int dz = -1; dz <= 1; ++dz) // where samples may move to
+  {
+    const Plane* near = z + dz >= this->Finalized ? this->FindPlane(z + dz) : nullptr;
+    this->Densities[dz + 1] = near ? near->Density.data() : nullptr;
+  }
+  this->Masks = plane->Mask.data();
+  this->MovedFlags = plane->Moved.data();
+  const int words = (this->NX + 63) / 64;
   for (int y = 0; y < this->NY; ++y) // the samples, through the bits
   {
-    const std::uint64_t* words = this->Row(slot->Bits.data(), y);
-    for (int w = 0; w < this->WordsPerRow; ++w)
+    const std::uint64_t* row = this->Row(slot->Bits.data(), y);
+    for (int w = 0; w < words; ++w)
     {
-      for (std::uint64_t bits = words[w]; bits; bits &= bits - 1)
+      for (std::uint64_t bits = row[w]; bits; bits &= bits - 1)
       {
         const int x = 64 * w + __builtin_ctzll(bits);
         const size_t i = x + static_cast<size_t>(this->NX) * y;
@@ -376,20 +431,21 @@ void vtkBlueNoiseRelaxation::RelaxLayer(int z)
       }
     }
   }
-  std::sort(this->Order.begin(), this->Order.end());
+  this->SortOrder();
+  const auto nx = static_cast<std::uint32_t>(this->NX);
   const size_t ahead = 4; // samples: far enough for the rows to arrive
   for (size_t k = 0; k < this->Order.size(); ++k)
   {
     if (k + ahead < this->Order.size())
     {
-      this->Prefetch(this->Order[k + ahead] & 0xFFFFFFFF, z);
+      const auto i = static_cast<std::uint32_t>(this->Order[k + ahead]);
+      this->Prefetch(static_cast<int>(i % nx), static_cast<int>(i / nx), z);
     }
-    const size_t i = this->Order[k] & 0xFFFFFFFF;
+    const auto i = static_cast<std::uint32_t>(this->Order[k]);
     // An earlier move may have taken this sample away, or put one here.
     if (plane->Mask[i] && !plane->Moved[i])
     {
-      this->RelaxSample(
-        static_cast<int>(i % this->NX), static_cast<int>(i / this->NX), z, plane->Density[i]);
+      this->RelaxSample(static_cast<int>(i % nx), static_cast<int>(i / nx), z, plane->Density[i]);
     }
   }
 }

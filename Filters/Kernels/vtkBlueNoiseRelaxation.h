@@ -38,6 +38,11 @@
  * returns the final layers, and Flush() the rest after the last one. Memory:
  * the densities, masks and move flags (6 bytes a voxel) of the MaximumRadius
  * + 3 layers not yet final, and the masks as bits of 32 layers.
+ *
+ * The searches: the rows of bits around a sample are copied into a window,
+ * 64 voxels wide, once per sample, and the nearest sample in a row is found
+ * from the bit counts on either side of the voxel, without a loop over the
+ * row's samples.
  */
 #ifndef vtkBlueNoiseRelaxation_h
 #define vtkBlueNoiseRelaxation_h
@@ -93,18 +98,26 @@ private:
     std::vector<unsigned char> Mask;
     std::vector<unsigned char> Moved; // samples that moved here: they move no more
   };
+  struct RowOffset // a row of voxels (dz, dy) from the one searched around
+  {
+    int DZ;
+    int DY;
+    int Squared; // dz^2 + dy^2
+    int Words;   // dy rows of words
+  };
 
   Slot* Find(int z);
   Plane* FindPlane(int z);
   const std::uint64_t* Row(const std::uint64_t* bits, int y) const;
+  std::ptrdiff_t RowStart(int y) const;
   bool Sample(int x, int y, int z);
-  float DensityAt(int x, int y, int z);
   void Set(int x, int y, int z, bool sample);
-  void SetRadius(int radius);
-  int NearestSquared(
-    int x, int y, int z, int best, int enough, int exceptX, int exceptY, int exceptZ);
+  void SetDensity(float g);
+  void Load(const std::vector<RowOffset>& rows, int x, int y);
+  int Nearest(int fx, int fy, int fz, int enough) const;
+  void SortOrder();
   void RelaxLayer(int z);
-  void Prefetch(std::size_t i, int z);
+  void Prefetch(int x, int y, int z);
   void RelaxSample(int x, int y, int z, float g);
   void Release(int z);
 
@@ -117,22 +130,27 @@ private:
   int Finalized = 0; // layers below this one were returned
   std::uint64_t Seed = 0;
   vtkIdType Moves = 0;
-  float LastDensity = -1.0f; // the density Limit and Radius are for
-  double Limit = 0.0;
-  int Radius = 1;
-  struct RowOffset
-  {
-    int DZ;
-    int DY;
-    int Squared;
-  };
-  std::vector<RowOffset> Rows; // within Radius, nearest first
-  int Nearest[3] = { 0, 0, 0 }; // offset of the sample NearestSquared found
+  float LastDensity = -1.0f; // the density Limit, Radius, Cap and the rows are for
+  double Limit = 0.0;         // the squared distance below which a sample moves
+  int Radius = 1;             // of the box searched around a voxel
+  int Cap = 1;                // distances are counted up to this one (squared)
+  std::vector<RowOffset> Rows;   // within Radius and nearer than Cap, nearest first
+  std::vector<RowOffset> Around; // the other rows a face neighbor's search reads
+  // The bits around the sample being relaxed: rows dz, dy in [-Reach, Reach]
+  // (Reach = MaximumRadius + 1), each 64 voxels wide, the sample's x at bit 32.
+  static constexpr int Reach = MaximumRadius + 1;
+  static constexpr int Span = 2 * Reach + 1;
+  std::uint64_t Window[Span * Span];
+  const std::uint64_t* Layers[Span]; // the bits of layers z - Reach ... z + Reach
+  const float* Densities[3] = {};     // of layers z - 1, z, z + 1 where samples may move
+  const unsigned char* Masks = nullptr;
+  const unsigned char* MovedFlags = nullptr;
   std::vector<Slot> Ring;
   std::vector<Plane> Planes;
   std::vector<std::uint64_t> NoSamples; // the bits of a layer outside the ring
   std::vector<Layer> Done;
   std::vector<std::uint64_t> Order; // hash and index of a layer's samples
+  std::vector<std::uint64_t> Scratch; // for sorting Order
 };
 
 #endif

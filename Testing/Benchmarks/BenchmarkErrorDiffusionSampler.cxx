@@ -8,10 +8,12 @@
 // default settings but for the identity mapping (a constant cube has no
 // scalar range): a point budget of g * voxels, the worker thread when more
 // than one thread is allowed, the default method or the paper's; the kernel
-// alone; and the filter with another process busy on every core ("busy").
+// alone; the relaxation pass alone, on the kernel's samples; and the filter
+// with another process busy on every core ("busy").
 // Counters: voxels/s, and x_plain = the plain loop's time / this time (the
 // plain loop timed, fastest of 3, right before the case, under the same load).
 // No thresholds.
+#include "vtkBlueNoiseRelaxation.h"
 #include "vtkErrorDiffusionKernel.h"
 #include "vtkErrorDiffusionParameterTable.h"
 #include "vtkErrorDiffusionSampler.h"
@@ -269,11 +271,60 @@ void BM_Kernel(benchmark::State& state)
     static_cast<double>(layer) * n, benchmark::Counter::kIsIterationInvariantRate);
   state.counters["x_plain"] = plain / best;
 }
+
+// The default method's relaxation pass alone, on the kernel's samples of a
+// constant cube; x_kernel = the kernel's time on that cube / this time.
+void BM_Relaxation(benchmark::State& state)
+{
+  const int n = static_cast<int>(state.range(0));
+  const float g = static_cast<float>(state.range(1)) / 255.0f;
+  const size_t layer = static_cast<size_t>(n) * n;
+  std::vector<float> density(layer, g);
+  std::vector<unsigned char> masks(layer * n);
+  const auto scanStart = Clock::now();
+  vtkErrorDiffusionKernel kernel;
+  kernel.Begin(n, n);
+  for (int z = 0; z < n; ++z)
+  {
+    kernel.ProcessLayer(density.data(), z + 1 < n ? density.data() : nullptr, &masks[z * layer]);
+  }
+  const double scan = std::chrono::duration<double>(Clock::now() - scanStart).count();
+  double best = 1e30;
+  vtkIdType moves = 0;
+  for (auto _ : state)
+  {
+    const auto start = Clock::now();
+    vtkBlueNoiseRelaxation relaxation;
+    relaxation.Begin(n, n, 0, 1);
+    vtkIdType samples = 0;
+    for (int z = 0; z < n; ++z)
+    {
+      for (const auto& l : relaxation.Push(z, density.data(), &masks[z * layer]))
+      {
+        samples += l.Count;
+      }
+    }
+    for (const auto& l : relaxation.Flush())
+    {
+      samples += l.Count;
+    }
+    benchmark::DoNotOptimize(samples);
+    best = std::min(best, std::chrono::duration<double>(Clock::now() - start).count());
+    moves = relaxation.GetNumberOfMoves();
+  }
+  state.counters["moves"] = static_cast<double>(moves);
+  state.counters["x_kernel"] = scan / best;
+}
 }
 
 BENCHMARK(BM_Kernel)
   ->ArgNames({ "L", "g255" })
   ->ArgsProduct({ { 256 }, { 8, 127 } })
+  ->ComputeStatistics("min", Fastest)
+  ->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_Relaxation)
+  ->ArgNames({ "L", "g255" })
+  ->ArgsProduct({ { 256 }, { 8, 32 } })
   ->ComputeStatistics("min", Fastest)
   ->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_Plain)
