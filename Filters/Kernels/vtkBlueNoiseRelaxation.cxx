@@ -271,6 +271,23 @@ int vtkBlueNoiseRelaxation::Nearest(int fx, int fy, int fz, int enough) const
 }
 
 //------------------------------------------------------------------------------
+// Bit f set when face neighbor f of (x, y) in the window's layer is no place
+// to move to: outside the volume, in a layer that is final, or a sample.
+inline unsigned vtkBlueNoiseRelaxation::BlockedFaces(int x, int y) const
+{
+  const std::uint64_t* center = this->Window + Reach * Span + Reach;
+  const auto bit = [](std::uint64_t row, int k) { return static_cast<unsigned>((row >> k) & 1); };
+  // Faces in the order of the table Faces: +x, -x, +y, -y, +z, -z.
+  const unsigned occupied = bit(center[0], 33) | bit(center[0], 31) << 1 | bit(center[1], 32) << 2 |
+    bit(center[-1], 32) << 3 | bit(center[Span], 32) << 4 | bit(center[-Span], 32) << 5;
+  const unsigned outside = static_cast<unsigned>(x + 1 >= this->NX) |
+    static_cast<unsigned>(x == 0) << 1 | static_cast<unsigned>(y + 1 >= this->NY) << 2 |
+    static_cast<unsigned>(y == 0) << 3 | static_cast<unsigned>(!this->Densities[2]) << 4 |
+    static_cast<unsigned>(!this->Densities[0]) << 5;
+  return occupied | outside;
+}
+
+//------------------------------------------------------------------------------
 void vtkBlueNoiseRelaxation::RelaxSample(int x, int y, int z, float g)
 {
   this->SetDensity(g);
@@ -294,17 +311,16 @@ void vtkBlueNoiseRelaxation::RelaxSample(int x, int y, int z, float g)
   // tolerance of 1/8: 3 % fewer points in the sparse end slab of a ramp).
   int best = current;
   int target = -1;
+  const unsigned blocked = this->BlockedFaces(x, y);
   for (const int face : order)
   {
-    const int* f = Faces[face];
-    const int X = x + f[0], Y = y + f[1];
-    const float* density = this->Densities[f[2] + 1];
-    const std::uint64_t row = this->Window[(f[2] + Reach) * Span + f[1] + Reach];
-    if (X < 0 || X >= this->NX || Y < 0 || Y >= this->NY || !density ||
-      ((row >> (32 + f[0])) & 1))
+    if ((blocked >> face) & 1)
     {
       continue;
     }
+    const int* f = Faces[face];
+    const int X = x + f[0], Y = y + f[1];
+    const float* density = this->Densities[f[2] + 1];
     const float gc = density[X + static_cast<size_t>(this->NX) * Y];
     if (!Relaxable(gc) || std::abs(gc - g) > DensityTolerance * g)
     {

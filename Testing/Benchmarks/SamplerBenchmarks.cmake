@@ -2,6 +2,6 @@
 # SPDX-License-Identifier: BSD-3-Clause
 # The smoke run (CTest): the smallest cases.
 bluenoise_add_benchmark(BenchmarkErrorDiffusionSampler
-  SMOKE "^BM_Kernel/L:256/g255:8$|^BM_Filter/L:256/g255:8/float:0/busy:0/thread:1")
+  SMOKE "^BM_Kernel/L:256/g255:8$|^BM_Relaxation/L:256/g255:8$|^BM_Filter/L:256/g255:8/float:0/busy:0/thread:1")
 
 
