@@ -226,18 +226,35 @@ bool vtkErrorDiffusionLayerRunner::RunSequential(vtkErrorDiffusionKernel& kernel
 //------------------------------------------------------------------------------
 bool vtkErrorDiffusionLayerRunner::RunThreaded(vtkErrorDiffusionKernel& kernel)
 {
-  LayerCounter filled;  // layers whose densities are ready
-  LayerCounter scanned; // layers whose mask is ready
+  LayerCounter filled;   // layers whose densities are ready
+  LayerCounter scanned;  // layers whose mask is ready
+  LayerCounter consumed; // layers whose buffers are free again
   Failure failure;
   const auto fail = [&](std::exception_ptr e) {
     failure.Set(e);
     filled.Wake();
     scanned.Wake();
+    consumed.Wake();
   };
   // Written by the scan thread before it advances `scanned` past the layer,
   // read by the consumer after it saw that: the atomic orders them.
   std::vector<vtkIdType> counts(this->Slots, 0);
   const int toFill = this->Layers + (this->LastHasNext ? 1 : 0);
+  // The layers below `target` filled, each into a slot whose layer was consumed.
+  int next = 0;
+  const auto fillUpTo = [&](int target) {
+    for (target = std::min(target, toFill); next < target; ++next)
+    {
+      if (!consumed.WaitFor(next - this->Slots + 1, failure.Stop))
+      {
+        return false;
+      }
+      this->Fill(next, this->DensitySlot(next));
+      filled.Advance(next + 1);
+    }
+    return true;
+  };
+  const bool scanThreadFills = this->FillOnScanThread;
 
   std::thread scanner([&]() {
     try
@@ -245,7 +262,9 @@ bool vtkErrorDiffusionLayerRunner::RunThreaded(vtkErrorDiffusionKernel& kernel)
       vtkIdType total = 0;
       for (int k = 0; k < this->Layers; ++k)
       {
-        if (!filled.WaitFor(std::min(k + 2, toFill), failure.Stop))
+        const bool ready = scanThreadFills ? fillUpTo(k + 2)
+                                           : filled.WaitFor(std::min(k + 2, toFill), failure.Stop);
+        if (!ready)
         {
           return;
         }
@@ -265,21 +284,16 @@ bool vtkErrorDiffusionLayerRunner::RunThreaded(vtkErrorDiffusionKernel& kernel)
     }
   });
 
-  // This thread: fill ahead (a slot is free once its layer was consumed),
-  // consume behind.
+  // This thread: fill ahead (unless the scan thread does), consume behind.
   bool complete = true;
-  int next = 0;
   try
   {
     for (int k = 0; k < this->Layers && complete; ++k)
     {
-      for (; next < toFill && next < k + this->Slots && !failure.Stop.load(); ++next)
-      {
-        this->Fill(next, this->DensitySlot(next));
-        filled.Advance(next + 1);
-      }
-      complete = scanned.WaitFor(k + 1, failure.Stop) &&
+      complete = (scanThreadFills || fillUpTo(k + this->Slots)) &&
+        scanned.WaitFor(k + 1, failure.Stop) &&
         this->Consume(this->LayerOf(k, counts[k % this->Slots]));
+      consumed.Advance(k + 1);
     }
   }
   catch (...)
@@ -291,6 +305,7 @@ bool vtkErrorDiffusionLayerRunner::RunThreaded(vtkErrorDiffusionKernel& kernel)
   {
     failure.Stop.store(true);
     filled.Wake();
+    consumed.Wake();
   }
   scanner.join();
   if (failure.Error)

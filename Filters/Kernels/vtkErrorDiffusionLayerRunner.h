@@ -10,7 +10,8 @@
  * samples of a layer into points and attributes) are not: with
  * SetThreaded(true) the scan runs on a worker thread and does nothing else,
  * while the calling thread fills the densities of the layers ahead of it and
- * consumes, in order, the layers behind it. The calling thread is the one
+ * consumes, in order, the layers behind it (or, where consuming costs more
+ * than scanning, the worker fills too: SetFillOnScanThread). The calling thread is the one
  * that fills and consumes, so a consumer may report progress and check for
  * abort the way a VTK filter must (from the thread that called it).
  *
@@ -33,8 +34,9 @@
  * the same order either way. Memory: a ring of 8 layers of densities and
  * masks when threaded, 2 when not.
  *
- * Fill and Consume run on the calling thread; MaskStorage, BeforeScan and
- * Finish on the scan thread, and must not touch what the others touch. An
+ * Fill and Consume run on the calling thread (Fill on the scan thread with
+ * SetFillOnScanThread(true)); MaskStorage, BeforeScan and Finish on the scan
+ * thread, and must not touch what the others touch. An
  * exception thrown by any callback stops the run; Run then returns false and
  * GetError() says what was thrown.
  */
@@ -76,6 +78,13 @@ public:
   void SetBeforeScan(BeforeScanFunction f) { this->BeforeScan = std::move(f); }
   void SetThreaded(bool threaded) { this->Threaded = threaded; }
   bool GetThreaded() const { return this->Threaded; }
+  /**
+   * Threaded runs only: the scan thread fills the densities too, and the
+   * calling thread only consumes. For consumers whose work outweighs the
+   * scan's (the relaxation of the default method); Fill then runs on the scan
+   * thread. Off by default.
+   */
+  void SetFillOnScanThread(bool scanThreadFills) { this->FillOnScanThread = scanThreadFills; }
 
   /**
    * Samples nz layers of nx * ny voxels with a kernel on which Begin() was
@@ -103,6 +112,7 @@ private:
   FinishFunction Finish;
   BeforeScanFunction BeforeScan;
   bool Threaded = false;
+  bool FillOnScanThread = false;
   std::string Error;
 
   // The layers of one Run and their ring of buffers.

@@ -74,14 +74,16 @@ struct Outcome
   bool DensitiesRight = true;
 };
 
-Outcome RunWith(bool threaded, int stopAt = -1, int throwInFill = -1, int throwInConsume = -1,
+// mode 0: one thread; 1: two threads; 2: two, the scan thread filling too.
+Outcome RunWith(int mode, int stopAt = -1, int throwInFill = -1, int throwInConsume = -1,
   bool external = false)
 {
   Outcome o;
   o.Mask.assign(LayerSize * NZ, 0);
   auto kernel = MakeKernel();
   vtkErrorDiffusionLayerRunner runner;
-  runner.SetThreaded(threaded);
+  runner.SetThreaded(mode > 0);
+  runner.SetFillOnScanThread(mode == 2);
   runner.SetFill([&](int z, float* out) {
     if (z == throwInFill)
     {
@@ -131,12 +133,13 @@ int main()
   }
   Check(ones > 1000, "the reference has samples: " + Str(ones));
 
-  for (const bool threaded : { false, true })
+  for (const int threads : { 0, 1, 2 })
   {
-    const std::string mode = threaded ? " (two threads)" : " (one thread)";
+    const std::string mode =
+      std::string(" (") + (threads == 0 ? "one thread" : threads == 1 ? "two threads" : "two threads, scan thread filling") + ")";
     for (const bool external : { false, true })
     {
-      const Outcome o = RunWith(threaded, -1, -1, -1, external);
+      const Outcome o = RunWith(threads, -1, -1, -1, external);
       bool inOrder = static_cast<int>(o.Order.size()) == NZ;
       for (int z = 0; inOrder && z < NZ; ++z)
       {
@@ -151,18 +154,18 @@ int main()
         "Finish gets the total: " + Str(o.Finished) + " of " + Str(ones) + mode);
     }
     {
-      const Outcome o = RunWith(threaded, 6);
+      const Outcome o = RunWith(threads, 6);
       Check(!o.Done && o.Error.empty() && o.Order.size() == 7 && o.Finished < 0,
         "a consumer that says stop at layer 6 ends the run after 7 layers, without Finish" + mode);
     }
     {
-      const Outcome o = RunWith(threaded, -1, 9);
+      const Outcome o = RunWith(threads, -1, 9);
       Check(!o.Done && o.Error == "fill failed" && o.Order.size() <= 9,
         "an exception in Fill ends the run and is reported ('" + o.Error + "', " +
           Str(o.Order.size()) + " layers consumed)" + mode);
     }
     {
-      const Outcome o = RunWith(threaded, -1, -1, 4);
+      const Outcome o = RunWith(threads, -1, -1, 4);
       Check(!o.Done && o.Error == "consume failed" && o.Order.size() == 4,
         "an exception in Consume ends the run and is reported ('" + o.Error + "')" + mode);
     }
