@@ -20,6 +20,7 @@
 #include "vtkPointData.h"
 #include "vtksys/SystemTools.hxx"
 
+#include <algorithm>
 #include <cerrno>
 #include <cmath>
 #include <cstring>
@@ -241,6 +242,25 @@ bool CheckImage(vtkImageData* image, std::string& error)
   }
   return true;
 }
+
+// Origin, spacing and direction finite (a NIfTI sform or qform, or a VTI's
+// Origin and Direction, can hold NaN or infinity: the points would too).
+bool CheckGeometry(vtkImageData* image, const std::string& frame, std::string& error)
+{
+  double values[15];
+  image->GetOrigin(values);
+  image->GetSpacing(values + 3);
+  std::copy(image->GetDirectionMatrix()->GetData(), image->GetDirectionMatrix()->GetData() + 9,
+    values + 6);
+  if (!std::all_of(values, values + 15, [](double v) { return std::isfinite(v); }))
+  {
+    error = "the volume's origin, spacing or direction is not finite" +
+      (frame == "voxel" ? std::string()
+                        : " (from the " + frame + " matrix; --voxel-space ignores it)");
+    return false;
+  }
+  return true;
+}
 }
 
 const char* VolumeSuffixes()
@@ -334,6 +354,11 @@ bool ReadVolume(const VolumeOptions& options, Volume& volume, std::string& error
   if (auto nifti = vtkNIFTIImageReader::SafeDownCast(reader))
   {
     volume.Frame = ApplyNIfTIFrame(nifti, volume.Image, options.VoxelSpace);
+  }
+  if (!CheckGeometry(volume.Image, volume.Frame, error))
+  {
+    error = path + ": " + error;
+    return false;
   }
   return true;
 }

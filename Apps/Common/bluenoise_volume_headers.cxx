@@ -894,6 +894,28 @@ bool DeclaredArrays(const std::string& path, double voxels, double& values, doub
 }
 }
 
+// An optional attribute of `count` numbers, all finite when present.
+bool FiniteAttribute(
+  const std::string& element, const char* name, size_t count, std::string& error)
+{
+  const std::string text = Attribute(element, name);
+  double values[9];
+  if (text.empty())
+  {
+    return true;
+  }
+  if (!Reals(text, count, values, name, error))
+  {
+    return false;
+  }
+  if (!std::all_of(values, values + count, [](double v) { return std::isfinite(v); }))
+  {
+    error = std::string(name) + " '" + text + "' is not finite";
+    return false;
+  }
+  return true;
+}
+
 bool CheckVTI(const std::string& path, Volume& volume, bool& streamable, std::string& error)
 {
   std::string head;
@@ -926,6 +948,11 @@ bool CheckVTI(const std::string& path, Volume& volume, bool& streamable, std::st
   }
   const std::string spacing = Attribute(element, "Spacing");
   if (!spacing.empty() && !Reals(spacing, 3, d.Spacing, "Spacing", error))
+  {
+    return false;
+  }
+  if (!FiniteAttribute(element, "Origin", 3, error) ||
+    !FiniteAttribute(element, "Direction", 9, error))
   {
     return false;
   }

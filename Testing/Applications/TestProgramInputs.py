@@ -237,6 +237,19 @@ def nifti_nan_spacing(ctx):
 
 
 @case
+def nifti_sform_not_finite(ctx):
+    # The world frame's matrix holds NaN, then infinity: points would too.
+    for name, bad in (('nan', float('nan')), ('inf', float('inf'))):
+        sform = [[1, 0, 0, bad], [0, 1, 0, 0], [0, 0, 1, 0]]
+        path = write(ctx.path('sform_%s.nii' % name),
+                     nifti_header((4, 4, 4), sform=sform) + ramp(64))
+        expect_file_error(ctx, path, 'not finite', 'sform')
+    # In voxel space the frame is not used: the same file samples.
+    p = ctx.sample(path, '--voxel-space')
+    check(p.returncode == 0, '--voxel-space: exit status %d' % p.returncode)
+
+
+@case
 def nifti_datatype_beyond_bitpix(ctx):
     # float64 voxels (datatype 64) with a bitpix of 8: the reader would allocate 8 bytes a voxel.
     path = write(ctx.path('bitpix.nii'), nifti_header((8, 8, 8), datatype=64, bitpix=8)
@@ -356,6 +369,17 @@ def vti_lying_components(ctx):
     text = open(path).read().replace('Name="v"', 'Name="v" NumberOfComponents="100000000"')
     open(path, 'w').write(text)
     expect_file_error(ctx, path, 'the arrays declare 51200000000 bytes')
+
+
+@case
+def vti_origin_direction_not_finite(ctx):
+    for attribute, words in (('Origin="nan 0 0"', ("Origin 'nan 0 0' is not finite",)),
+                             ('Origin="0 0 0" Direction="1 0 0 0 inf 0 0 0 1"',
+                              ('Direction', 'is not finite'))):
+        path = vti_ascii(ctx.path('frame.vti'), (4, 4, 4), [('UInt8', 'v', ' '.join(['9'] * 64))])
+        text = open(path).read().replace('Origin="0 0 0"', attribute)
+        open(path, 'w').write(text)
+        expect_file_error(ctx, path, *words)
 
 
 @case
