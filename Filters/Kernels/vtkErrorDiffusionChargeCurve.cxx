@@ -15,6 +15,10 @@ namespace
 {
 // Calibration levels (1/255 units), whatever the table's keys: C varies with
 // g even where the parameters do not.
+// The level whose calibration starts from a fixed guess; the others start
+// from their neighbor's charge, in a chain from this one.
+constexpr double AnchorLevel = 8.0;
+
 const double FixedLevels[] = { 0.0255, 0.05, 0.1, 0.25, 0.5, 1.0, 2.0, 4.0, 8.0, 16.0, 32.0,
   48.0, 64.0, 80.0, 96.0, 112.0, 127.5 };
 
@@ -97,24 +101,13 @@ float vtkErrorDiffusionChargeCurve::ChargeOfLevel(size_t i)
   {
     return this->Charges[i];
   }
-  // Start from the nearest level already known: the refinement then only has
-  // to settle a small difference.
-  float guess = 0.45f;
-  size_t nearest = this->Levels.size();
-  for (size_t j = 0; j < this->Levels.size(); ++j)
-  {
-    const bool known = !std::isnan(this->Charges[j]);
-    if (known && (nearest == this->Levels.size() ||
-                   std::abs(this->RootLevels[j] - this->RootLevels[i]) <
-                     std::abs(this->RootLevels[nearest] - this->RootLevels[i])))
-    {
-      nearest = j;
-    }
-  }
-  if (nearest < this->Levels.size())
-  {
-    guess = this->Charges[nearest];
-  }
+  // Start from the neighbor towards the anchor level (calibrated first): the
+  // refinement then only has to settle a small difference, and a level's
+  // charge does not depend on the levels the process happened to calibrate
+  // before it (it did when the guess was the nearest level known).
+  const size_t anchor = static_cast<size_t>(
+    std::lower_bound(this->Levels.begin(), this->Levels.end(), AnchorLevel) - this->Levels.begin());
+  float guess = i == anchor ? 0.45f : this->ChargeOfLevel(i > anchor ? i - 1 : i + 1);
   const double g = this->Levels[i] / 255.0;
   for (int seed : { 12345, 12346 })
   {

@@ -22,8 +22,10 @@
  * process translated by a guess c0 (the paper's process pre-charged with c0,
  * which settles within a few point spacings): C = c0 + that mean. Two such
  * refinements are made, with seeds 12345 and 12346, the first from the charge
- * of the nearest level already known (0.45 for the first). The repeatability
- * is about 0.001 below g = 8/255 and 0.002 above.
+ * of the next level towards 8/255 (0.45 at 8/255 itself), which is calibrated
+ * first: a level's charge, and so the samples, do not depend on what the
+ * process calibrated before. The repeatability is about 0.001 below g = 8/255
+ * and 0.002 above.
  *
  * Levels. C is calibrated at the levels (in 1/255 units) 0.0255, 0.05, 0.1,
  * 0.25, 0.5, 1, 2, 4, 8, 16, 32, 48, 64, 80, 96, 112 and 127.5 and at every

@@ -3,7 +3,8 @@
 // The process-wide cache of charge curves (vtkErrorDiffusionChargeCurve::Get):
 // one curve per table and scale, bit for bit (scales equal to 6 digits once
 // shared a curve), the least recently used curve out first when the cache is
-// full while a curve in use stays, and one curve for threads asking at once.
+// full while a curve in use stays, and one curve for threads asking at once;
+// a level's charge does not depend on the levels calibrated before it.
 #include "BlueNoiseTestUtilities.h"
 #include "vtkErrorDiffusionChargeCurve.h"
 #include "vtkErrorDiffusionParameterTable.h"
@@ -33,6 +34,26 @@ void OneCurvePerKey()
   for (double g : { 0.01, 0.2 })
   {
     Check(b->At(g) == apart.At(g), "the cached curve's charge at g = " + Str(g));
+  }
+}
+
+// Two curves of one table and scale asked for levels in different orders: the
+// same charges bit for bit (the starting guess was once the nearest level
+// known, so a process that had sampled at 8/255 sampled 32/255 differently).
+void OrderFree()
+{
+  const auto table = vtkErrorDiffusionParameterTable::Optimized();
+  vtkErrorDiffusionChargeCurve upward(table, 0.5);
+  vtkErrorDiffusionChargeCurve direct(table, 0.5);
+  const double gs[] = { 2.0 / 255.0, 8.0 / 255.0, 32.0 / 255.0, 100.0 / 255.0 };
+  for (double g : gs)
+  {
+    upward.At(g);
+  }
+  for (int k = 3; k >= 0; --k)
+  {
+    Check(direct.At(gs[k]) == upward.At(gs[k]),
+      "C(" + Str(255.0 * gs[k]) + "/255) alike whatever was calibrated before");
   }
 }
 
@@ -90,6 +111,7 @@ void ThreadsShareCurves()
 int main()
 {
   OneCurvePerKey();
+  OrderFree();
   LeastRecentlyUsedOut();
   ThreadsShareCurves();
   return Summary("TestErrorDiffusionChargeCurve");
