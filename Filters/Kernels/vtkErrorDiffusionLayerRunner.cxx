@@ -4,6 +4,7 @@
 
 #include "vtkErrorDiffusionKernel.h"
 
+#include <algorithm>
 #include <atomic>
 #include <condition_variable>
 #include <exception>
@@ -112,6 +113,44 @@ struct Failure
   }
 };
 }
+
+//------------------------------------------------------------------------------
+// What the two threads of a threaded run share: how far filling, scanning and
+// consuming have come, the counts of the layers scanned and not yet consumed
+// (written before `Scanned` advances past a layer, read after: the atomic
+// orders them), and the first failure.
+struct vtkErrorDiffusionLayerRunner::ThreadState
+{
+  ThreadState(int slots, int toFill)
+    : Counts(slots, 0)
+    , ToFill(toFill)
+  {
+  }
+  void Fail(std::exception_ptr e)
+  {
+    this->Failed.Set(e);
+    this->WakeAll();
+  }
+  void Stop()
+  {
+    this->Failed.Stop.store(true);
+    this->WakeAll();
+  }
+  void WakeAll()
+  {
+    this->Filled.Wake();
+    this->Scanned.Wake();
+    this->Consumed.Wake();
+  }
+
+  LayerCounter Filled;   // layers whose densities are ready
+  LayerCounter Scanned;  // layers whose mask is ready
+  LayerCounter Consumed; // layers whose buffers are free again
+  Failure Failed;
+  std::vector<vtkIdType> Counts;
+  const int ToFill; // layers to fill: the run's, and its last one's successor if any
+  int Next = 0;     // the next layer to fill (by one thread only)
+};
 
 //------------------------------------------------------------------------------
 float* vtkErrorDiffusionLayerRunner::DensitySlot(int k)
@@ -226,92 +265,95 @@ bool vtkErrorDiffusionLayerRunner::RunSequential(vtkErrorDiffusionKernel& kernel
 //------------------------------------------------------------------------------
 bool vtkErrorDiffusionLayerRunner::RunThreaded(vtkErrorDiffusionKernel& kernel)
 {
-  LayerCounter filled;   // layers whose densities are ready
-  LayerCounter scanned;  // layers whose mask is ready
-  LayerCounter consumed; // layers whose buffers are free again
-  Failure failure;
-  const auto fail = [&](std::exception_ptr e) {
-    failure.Set(e);
-    filled.Wake();
-    scanned.Wake();
-    consumed.Wake();
-  };
-  // Written by the scan thread before it advances `scanned` past the layer,
-  // read by the consumer after it saw that: the atomic orders them.
-  std::vector<vtkIdType> counts(this->Slots, 0);
-  const int toFill = this->Layers + (this->LastHasNext ? 1 : 0);
-  // The layers below `target` filled, each into a slot whose layer was consumed.
-  int next = 0;
-  const auto fillUpTo = [&](int target) {
-    for (target = std::min(target, toFill); next < target; ++next)
-    {
-      if (!consumed.WaitFor(next - this->Slots + 1, failure.Stop))
-      {
-        return false;
-      }
-      this->Fill(next, this->DensitySlot(next));
-      filled.Advance(next + 1);
-    }
-    return true;
-  };
-  const bool scanThreadFills = this->FillOnScanThread;
+  ThreadState state(this->Slots, this->Layers + (this->LastHasNext ? 1 : 0));
+  std::thread scanner([&]() { this->ScanAll(kernel, state); });
+  const bool complete = this->ConsumeAll(state);
+  if (!complete)
+  {
+    state.Stop();
+  }
+  scanner.join();
+  if (state.Failed.Error)
+  {
+    this->Error = Describe(state.Failed.Error);
+    return false;
+  }
+  return complete;
+}
 
-  std::thread scanner([&]() {
-    try
+//------------------------------------------------------------------------------
+// The layers below `target` filled (at most all of them), each into a slot
+// whose layer was consumed; false when the run stopped.
+bool vtkErrorDiffusionLayerRunner::FillUpTo(ThreadState& state, int target)
+{
+  for (target = std::min(target, state.ToFill); state.Next < target; ++state.Next)
+  {
+    if (!state.Consumed.WaitFor(state.Next - this->Slots + 1, state.Failed.Stop))
     {
-      vtkIdType total = 0;
-      for (int k = 0; k < this->Layers; ++k)
-      {
-        const bool ready = scanThreadFills ? fillUpTo(k + 2)
-                                           : filled.WaitFor(std::min(k + 2, toFill), failure.Stop);
-        if (!ready)
-        {
-          return;
-        }
-        const vtkIdType count = this->ScanLayer(kernel, k);
-        total += count;
-        counts[k % this->Slots] = count;
-        scanned.Advance(k + 1);
-      }
-      if (this->Finish)
-      {
-        this->Finish(total);
-      }
+      return false;
     }
-    catch (...)
-    {
-      fail(std::current_exception());
-    }
-  });
+    this->Fill(state.Next, this->DensitySlot(state.Next));
+    state.Filled.Advance(state.Next + 1);
+  }
+  return true;
+}
 
-  // This thread: fill ahead (unless the scan thread does), consume behind.
-  bool complete = true;
+//------------------------------------------------------------------------------
+// The scan thread: every layer once its densities and its successor's are
+// filled (by this thread with FillOnScanThread), then Finish.
+void vtkErrorDiffusionLayerRunner::ScanAll(vtkErrorDiffusionKernel& kernel, ThreadState& state)
+{
   try
   {
-    for (int k = 0; k < this->Layers && complete; ++k)
+    vtkIdType total = 0;
+    for (int k = 0; k < this->Layers; ++k)
     {
-      complete = (scanThreadFills || fillUpTo(k + this->Slots)) &&
-        scanned.WaitFor(k + 1, failure.Stop) &&
-        this->Consume(this->LayerOf(k, counts[k % this->Slots]));
-      consumed.Advance(k + 1);
+      const bool ready = this->FillOnScanThread
+        ? this->FillUpTo(state, k + 2)
+        : state.Filled.WaitFor(std::min(k + 2, state.ToFill), state.Failed.Stop);
+      if (!ready)
+      {
+        return;
+      }
+      const vtkIdType count = this->ScanLayer(kernel, k);
+      total += count;
+      state.Counts[k % this->Slots] = count;
+      state.Scanned.Advance(k + 1);
+    }
+    if (this->Finish)
+    {
+      this->Finish(total);
     }
   }
   catch (...)
   {
-    fail(std::current_exception());
-    complete = false;
+    state.Fail(std::current_exception());
   }
-  if (!complete)
+}
+
+//------------------------------------------------------------------------------
+// The calling thread: fills ahead (unless the scan thread does) and consumes
+// behind, in order; false when the consumer stopped or anything threw.
+bool vtkErrorDiffusionLayerRunner::ConsumeAll(ThreadState& state)
+{
+  try
   {
-    failure.Stop.store(true);
-    filled.Wake();
-    consumed.Wake();
+    for (int k = 0; k < this->Layers; ++k)
+    {
+      const bool consumed = (this->FillOnScanThread || this->FillUpTo(state, k + this->Slots)) &&
+        state.Scanned.WaitFor(k + 1, state.Failed.Stop) &&
+        this->Consume(this->LayerOf(k, state.Counts[k % this->Slots]));
+      state.Consumed.Advance(k + 1);
+      if (!consumed)
+      {
+        return false;
+      }
+    }
+    return true;
   }
-  scanner.join();
-  if (failure.Error)
+  catch (...)
   {
-    this->Error = Describe(failure.Error);
+    state.Fail(std::current_exception());
     return false;
   }
-  return complete;
 }

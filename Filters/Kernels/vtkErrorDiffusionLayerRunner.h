@@ -102,6 +102,10 @@ public:
 private:
   bool RunSequential(vtkErrorDiffusionKernel& kernel);
   bool RunThreaded(vtkErrorDiffusionKernel& kernel);
+  struct ThreadState;
+  bool FillUpTo(ThreadState& state, int target);
+  void ScanAll(vtkErrorDiffusionKernel& kernel, ThreadState& state);
+  bool ConsumeAll(ThreadState& state);
   vtkIdType ScanLayer(vtkErrorDiffusionKernel& kernel, int k);
   Layer LayerOf(int k, vtkIdType count);
   float* DensitySlot(int k);
