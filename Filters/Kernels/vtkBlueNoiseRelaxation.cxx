@@ -57,22 +57,31 @@ std::uint64_t PackBits(const unsigned char* bytes, int n)
   return bits;
 }
 
-// How far a move may change the density, relative to it.
-constexpr float DensityTolerance = 1.0f / 64.0f;
-
 inline bool Relaxable(float g)
 {
   return g > 0.0f && g <= vtkBlueNoiseRelaxation::MaximumDensity;
 }
-
-// Offsets searched outwards: 0, -1, 1, -2, 2, ...
-int Outward(int i)
-{
-  return (i & 1) ? -((i + 1) / 2) : i / 2;
 }
 
-const int Faces[6][3] = { { 1, 0, 0 }, { -1, 0, 0 }, { 0, 1, 0 }, { 0, -1, 0 }, { 0, 0, 1 },
-  { 0, 0, -1 } };
+//------------------------------------------------------------------------------
+std::uint64_t vtkBlueNoiseRelaxation::OrderKey(std::uint64_t seed, int x, int y, int z)
+{
+  return Hash(seed, x, y, z) & ~std::uint64_t(0xFFFFFFFF);
+}
+
+//------------------------------------------------------------------------------
+// Fisher-Yates on the bits of another hash.
+void vtkBlueNoiseRelaxation::FaceOrder(std::uint64_t seed, int x, int y, int z, int order[6])
+{
+  std::uint64_t h = Hash(seed ^ 0x5DEECE66DULL, x, y, z);
+  for (int k = 0; k < 6; ++k)
+  {
+    order[k] = k;
+  }
+  for (int k = 5; k > 0; --k, h /= 6)
+  {
+    std::swap(order[k], order[h % static_cast<std::uint64_t>(k + 1)]);
+  }
 }
 
 //------------------------------------------------------------------------------
@@ -299,13 +308,8 @@ void vtkBlueNoiseRelaxation::RelaxSample(int x, int y, int z, float g)
     return;
   }
   this->Load(this->Around, x, y);
-  // The six faces in a hashed order (Fisher-Yates on the hash's bits).
-  std::uint64_t h = Hash(this->Seed ^ 0x5DEECE66DULL, x, y, z);
-  int order[6] = { 0, 1, 2, 3, 4, 5 };
-  for (int k = 5; k > 0; --k, h /= 6)
-  {
-    std::swap(order[k], order[h % static_cast<std::uint64_t>(k + 1)]);
-  }
+  int order[6];
+  FaceOrder(this->Seed, x, y, z, order);
   // Only to a voxel of nearly the same density: along a density gradient a
   // rule by distance moves samples one way more than the other (with a
   // tolerance of 1/8: 3 % fewer points in the sparse end slab of a ramp).
@@ -442,7 +446,7 @@ void vtkBlueNoiseRelaxation::RelaxLayer(int z)
         const size_t i = x + static_cast<size_t>(this->NX) * y;
         if (!plane->Moved[i] && Relaxable(plane->Density[i]))
         {
-          this->Order.push_back((Hash(this->Seed, x, y, z) & ~std::uint64_t(0xFFFFFFFF)) | i);
+          this->Order.push_back(OrderKey(this->Seed, x, y, z) | i);
         }
       }
     }

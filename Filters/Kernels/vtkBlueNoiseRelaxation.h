@@ -68,6 +68,21 @@ public:
 
   static constexpr int MaximumRadius = 8;
   static constexpr float MaximumDensity = 0.25f;
+  /// How far a move may change the density, relative to it.
+  static constexpr float DensityTolerance = 1.0f / 64.0f;
+
+  /// The face neighbors, in the order FaceOrder permutes: +x, -x, +y, -y, +z, -z.
+  static constexpr int Faces[6][3] = { { 1, 0, 0 }, { -1, 0, 0 }, { 0, 1, 0 }, { 0, -1, 0 },
+    { 0, 0, 1 }, { 0, 0, -1 } };
+
+  /**
+   * The hashed order of a layer's samples: by OrderKey(seed, x, y, z) | i,
+   * i = x + nx y the index in the layer (the key's low 32 bits are 0).
+   */
+  static std::uint64_t OrderKey(std::uint64_t seed, int x, int y, int z);
+
+  /// The order in which the faces (indices into Faces) of sample (x, y, z) are tried.
+  static void FaceOrder(std::uint64_t seed, int x, int y, int z, int order[6]);
 
   /// Start a run over layers of nx * ny voxels, the first one being z.
   void Begin(int nx, int ny, int firstZ, std::uint64_t seed);

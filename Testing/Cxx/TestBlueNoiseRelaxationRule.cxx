@@ -1,0 +1,212 @@
+// SPDX-FileCopyrightText: Copyright (c) 2025-2026 the BlueNoiseSampling contributors
+// SPDX-License-Identifier: BSD-3-Clause
+// vtkBlueNoiseRelaxation against its definition (the class comment), written
+// here the plain way: the whole volume in memory, the nearest sample by a loop
+// over the box around a voxel. Random masks over densities that vary by voxel
+// (within and beyond the move tolerance, above 1/4 and 0), at several
+// volume shapes (rows shorter and longer than a word), pushed layer by layer:
+// the relaxed masks must be the same bit for bit, and the counts kept.
+#include "BlueNoiseTestUtilities.h"
+#include "vtkBlueNoiseRelaxation.h"
+
+#include <algorithm>
+#include <cmath>
+#include <random>
+#include <vector>
+
+using namespace bluenoise_test;
+
+namespace
+{
+using R = vtkBlueNoiseRelaxation;
+
+struct Volume
+{
+  int N[3];
+  std::vector<float> Density;
+  std::vector<unsigned char> Mask;
+  size_t Index(int x, int y, int z) const { return x + N[0] * (y + static_cast<size_t>(N[1]) * z); }
+  bool Inside(int x, int y, int z) const
+  {
+    return x >= 0 && y >= 0 && z >= 0 && x < N[0] && y < N[1] && z < N[2];
+  }
+};
+
+bool Relaxable(float g)
+{
+  return g > 0.0f && g <= R::MaximumDensity;
+}
+
+// min(cap, squared distance from (x, y, z) to the nearest sample other than
+// `except` in the box of half-width `radius`).
+int Nearest(const Volume& v, int x, int y, int z, int radius, int cap, const int except[3])
+{
+  int best = cap;
+  for (int dz = -radius; dz <= radius; ++dz)
+  {
+    for (int dy = -radius; dy <= radius; ++dy)
+    {
+      for (int dx = -radius; dx <= radius; ++dx)
+      {
+        const int X = x + dx, Y = y + dy, Z = z + dz;
+        if (v.Inside(X, Y, Z) && v.Mask[v.Index(X, Y, Z)] &&
+          !(X == except[0] && Y == except[1] && Z == except[2]))
+        {
+          best = std::min(best, dx * dx + dy * dy + dz * dz);
+        }
+      }
+    }
+  }
+  return best;
+}
+
+// One sample's chance to move, as the class comment defines it.
+void RelaxSample(Volume& v, std::vector<unsigned char>& moved, int x, int y, int z, std::uint64_t seed)
+{
+  const float g = v.Density[v.Index(x, y, z)];
+  const double spacing = std::cbrt(1.0 / g);
+  const double limit = 0.75 * spacing * spacing;
+  const int radius =
+    static_cast<int>(std::min(std::ceil(0.87 * spacing) + 1.0, double(R::MaximumRadius)));
+  const int cap =
+    static_cast<int>(std::min(std::ceil(limit), static_cast<double>((radius + 1) * (radius + 1))));
+  const int p[3] = { x, y, z };
+  const int current = Nearest(v, x, y, z, radius, cap, p);
+  if (current >= limit)
+  {
+    return;
+  }
+  int order[6];
+  R::FaceOrder(seed, x, y, z, order);
+  int best = current, target = -1;
+  for (int face : order)
+  {
+    const int X = x + R::Faces[face][0], Y = y + R::Faces[face][1], Z = z + R::Faces[face][2];
+    if (!v.Inside(X, Y, Z) || v.Mask[v.Index(X, Y, Z)])
+    {
+      continue;
+    }
+    const float gc = v.Density[v.Index(X, Y, Z)];
+    if (!Relaxable(gc) || std::abs(gc - g) > R::DensityTolerance * g)
+    {
+      continue;
+    }
+    const int d = Nearest(v, X, Y, Z, radius, cap, p);
+    if (d > best)
+    {
+      best = d;
+      target = face;
+      if (best >= cap)
+      {
+        break;
+      }
+    }
+  }
+  if (target >= 0)
+  {
+    const size_t to =
+      v.Index(x + R::Faces[target][0], y + R::Faces[target][1], z + R::Faces[target][2]);
+    v.Mask[v.Index(x, y, z)] = 0;
+    v.Mask[to] = 1;
+    moved[to] = 1;
+  }
+}
+
+// The reference pass: layer by layer, each layer's samples in the hashed order.
+void Relax(Volume& v, std::uint64_t seed)
+{
+  std::vector<unsigned char> moved(v.Mask.size(), 0);
+  for (int z = 0; z < v.N[2]; ++z)
+  {
+    std::vector<std::uint64_t> order;
+    for (int y = 0; y < v.N[1]; ++y)
+    {
+      for (int x = 0; x < v.N[0]; ++x)
+      {
+        const size_t at = v.Index(x, y, z);
+        if (v.Mask[at] && !moved[at] && Relaxable(v.Density[at]))
+        {
+          order.push_back(R::OrderKey(seed, x, y, z) | static_cast<std::uint64_t>(x + v.N[0] * y));
+        }
+      }
+    }
+    std::sort(order.begin(), order.end());
+    for (std::uint64_t key : order)
+    {
+      const int i = static_cast<int>(key & 0xFFFFFFFF);
+      const int x = i % v.N[0], y = i / v.N[0];
+      if (v.Mask[v.Index(x, y, z)] && !moved[v.Index(x, y, z)])
+      {
+        RelaxSample(v, moved, x, y, z, seed);
+      }
+    }
+  }
+}
+
+// Densities: a few values per region, some within the tolerance of each other.
+Volume Random(int nx, int ny, int nz, std::uint32_t seed)
+{
+  std::mt19937 random(seed);
+  Volume v{ { nx, ny, nz }, {}, {} };
+  const float levels[] = { 0.0f, 4.0f / 255, 8.0f / 255, 8.05f / 255, 32.0f / 255, 0.25f, 0.3f };
+  std::uniform_int_distribution<int> pick(0, 6);
+  std::uniform_real_distribution<float> unit(0.0f, 1.0f);
+  v.Density.resize(static_cast<size_t>(nx) * ny * nz);
+  v.Mask.resize(v.Density.size());
+  const int block = 5; // regions of 5^3 voxels
+  std::vector<float> region(static_cast<size_t>(nx / block + 1) * (ny / block + 1) * (nz / block + 1));
+  for (float& g : region)
+  {
+    g = levels[pick(random)];
+  }
+  for (int z = 0; z < nz; ++z)
+  {
+    for (int y = 0; y < ny; ++y)
+    {
+      for (int x = 0; x < nx; ++x)
+      {
+        const size_t r = x / block + (nx / block + 1) * (y / block + (ny / block + 1) * (z / block));
+        const size_t i = v.Index(x, y, z);
+        v.Density[i] = region[r];
+        v.Mask[i] = unit(random) < 2.0f * std::max(region[r], 0.02f) ? 1 : 0;
+      }
+    }
+  }
+  return v;
+}
+}
+
+int main()
+{
+  // Rows shorter and longer than a word, a column, more layers than the ring holds.
+  const int shapes[][3] = { { 13, 11, 17 }, { 70, 9, 12 }, { 130, 6, 10 }, { 1, 1, 5 }, { 20, 8, 40 } };
+  for (const auto& shape : shapes)
+  {
+    for (std::uint64_t seed : { 1u, 77u })
+    {
+      Volume v = Random(shape[0], shape[1], shape[2], static_cast<std::uint32_t>(seed + shape[0]));
+      const auto count = std::count(v.Mask.begin(), v.Mask.end(), 1);
+      const size_t layer = static_cast<size_t>(shape[0]) * shape[1];
+      std::vector<unsigned char> relaxed(v.Mask.size(), 2);
+      R relaxation;
+      relaxation.Begin(shape[0], shape[1], 0, seed);
+      auto keep = [&](const std::vector<R::Layer>& layers) {
+        for (const auto& l : layers)
+        {
+          std::copy(l.Mask, l.Mask + layer, relaxed.begin() + l.Z * layer);
+        }
+      };
+      for (int z = 0; z < shape[2]; ++z)
+      {
+        keep(relaxation.Push(z, &v.Density[z * layer], &v.Mask[z * layer]));
+      }
+      keep(relaxation.Flush());
+      Relax(v, seed);
+      const std::string what = Str(shape[0]) + "x" + Str(shape[1]) + "x" + Str(shape[2]) +
+        " seed " + Str(seed) + " (" + Str(relaxation.GetNumberOfMoves()) + " moves)";
+      Check(relaxed == v.Mask, "the pass moves as its definition does: " + what);
+      Check(std::count(relaxed.begin(), relaxed.end(), 1) == count, "the count is kept: " + what);
+    }
+  }
+  return Summary("TestBlueNoiseRelaxationRule");
+}
