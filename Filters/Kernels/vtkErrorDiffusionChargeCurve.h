@@ -64,7 +64,14 @@ public:
   static std::shared_ptr<vtkErrorDiffusionChargeCurve> Get(
     const vtkErrorDiffusionParameterTable& table, double modulationScale);
 
-  vtkErrorDiffusionChargeCurve(const vtkErrorDiffusionParameterTable& table, double modulationScale);
+  /**
+   * A curve of `table` and `modulationScale`. The built-in tables at the
+   * sampler's default scale (0.5) start with their charges known (as
+   * calibrated; TestErrorDiffusionChargeCurve checks them), unless
+   * useKnownCharges is false.
+   */
+  vtkErrorDiffusionChargeCurve(const vtkErrorDiffusionParameterTable& table, double modulationScale,
+    bool useKnownCharges = true);
 
   /// C(g) for g in [0, 1]; calibrates the levels it needs the first time.
   float At(double g);

@@ -4,12 +4,17 @@
 // one curve per table and scale, bit for bit (scales equal to 6 digits once
 // shared a curve), the least recently used curve out first when the cache is
 // full while a curve in use stays, and one curve for threads asking at once;
-// a level's charge does not depend on the levels calibrated before it.
+// a level's charge does not depend on the levels calibrated before it; the
+// known charges of the built-in tables are those a calibration gives.
 #include "BlueNoiseTestUtilities.h"
 #include "vtkErrorDiffusionChargeCurve.h"
 #include "vtkErrorDiffusionParameterTable.h"
 
+#include <algorithm>
+#include <cmath>
 #include <memory>
+#include <sstream>
+#include <utility>
 #include <thread>
 #include <vector>
 
@@ -43,8 +48,8 @@ void OneCurvePerKey()
 void OrderFree()
 {
   const auto table = vtkErrorDiffusionParameterTable::Optimized();
-  vtkErrorDiffusionChargeCurve upward(table, 0.5);
-  vtkErrorDiffusionChargeCurve direct(table, 0.5);
+  vtkErrorDiffusionChargeCurve upward(table, 0.75); // a scale without known charges
+  vtkErrorDiffusionChargeCurve direct(table, 0.75);
   const double gs[] = { 2.0 / 255.0, 8.0 / 255.0, 32.0 / 255.0, 100.0 / 255.0 };
   for (double g : gs)
   {
@@ -54,6 +59,32 @@ void OrderFree()
   {
     Check(direct.At(gs[k]) == upward.At(gs[k]),
       "C(" + Str(255.0 * gs[k]) + "/255) alike whatever was calibrated before");
+  }
+}
+
+// The built-in tables' charges at the default scale, which curves start
+// with, are those a calibration gives (printed for the source when not).
+void KnownCharges()
+{
+  const std::pair<const char*, vtkErrorDiffusionParameterTable> tables[] = {
+    { "Optimized", vtkErrorDiffusionParameterTable::Optimized() },
+    { "Paper", vtkErrorDiffusionParameterTable::Paper() },
+    { "Fixed", vtkErrorDiffusionParameterTable::Fixed() } };
+  for (const auto& named : tables)
+  {
+    const auto known = vtkErrorDiffusionChargeCurve(named.second, 0.5).GetCharges();
+    const auto fresh = vtkErrorDiffusionChargeCurve(named.second, 0.5, false).GetCharges();
+    float worst = known.size() == fresh.size() ? 0.0f : 1.0f;
+    std::ostringstream values;
+    values.precision(9);
+    for (size_t i = 0; i < fresh.size(); ++i)
+    {
+      worst = std::max(worst, i < known.size() ? std::abs(known[i] - fresh[i]) : 1.0f);
+      values << fresh[i] << "f, ";
+    }
+    Check(worst <= 1e-5f,
+      std::string(named.first) + ": known charges within 1e-5 of a calibration (worst " +
+        Str(worst) + "); calibrated: " + values.str());
   }
 }
 
@@ -112,6 +143,7 @@ int main()
 {
   OneCurvePerKey();
   OrderFree();
+  KnownCharges();
   LeastRecentlyUsedOut();
   ThreadsShareCurves();
   return Summary("TestErrorDiffusionChargeCurve");
