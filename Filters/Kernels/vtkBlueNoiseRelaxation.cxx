@@ -479,7 +479,8 @@ void vtkBlueNoiseRelaxation::Release(int z)
   layer.Z = z;
   layer.Density = plane->Density.data();
   layer.Mask = plane->Mask.data();
-  layer.Count = std::count(plane->Mask.begin(), plane->Mask.end(), 1);
+  layer.Count = std::count_if(
+    plane->Mask.begin(), plane->Mask.end(), [](unsigned char m) { return m != 0; });
   this->Done.push_back(layer);
   this->Finalized = z + 1;
 }
@@ -492,14 +493,10 @@ const std::vector<vtkBlueNoiseRelaxation::Layer>& vtkBlueNoiseRelaxation::Push(
   this->Last = z;
   Slot& slot = this->Ring[static_cast<size_t>(z - this->First) & (RingSize - 1)];
   slot.Z = z;
-  Plane& plane = this->Planes[static_cast<size_t>(z - this->First) % PlaneCount];
-  plane.Z = z;
-  const size_t layer = plane.Mask.size();
-  std::copy(density, density + layer, plane.Density.begin());
+  const size_t layer = static_cast<size_t>(this->NX) * this->NY;
   slot.Relaxable = std::any_of(density, density + layer, Relaxable);
-  std::copy(mask, mask + layer, plane.Mask.begin());
-  std::fill(plane.Moved.begin(), plane.Moved.end(), 0);
   std::fill(slot.Bits.begin(), slot.Bits.end(), 0);
+  vtkIdType count = 0;
   for (int y = 0; y < this->NY; ++y)
   {
     const unsigned char* row = mask + static_cast<size_t>(y) * this->NX;
@@ -507,17 +504,49 @@ const std::vector<vtkBlueNoiseRelaxation::Layer>& vtkBlueNoiseRelaxation::Push(
     for (int x0 = 0; x0 < this->NX; x0 += 64)
     {
       words[x0 >> 6] = PackBits(row + x0, std::min(64, this->NX - x0));
+      count += __builtin_popcountll(words[x0 >> 6]);
     }
   }
-  for (; this->Relaxed + MaximumRadius <= this->Last; ++this->Relaxed)
+  if (!slot.Relaxable && this->Relaxed == z && this->Finalized == z)
   {
+    // No layer before it waits, and no sample moves into or out of it: it is
+    // final as it came (densities above 1/4, or none), without a copy.
+    this->Relaxed = this->Finalized = z + 1;
+    this->Done.push_back({ z, density, mask, count });
+    return this->Done;
+  }
+  Plane& plane = this->Planes[static_cast<size_t>(z - this->First) % PlaneCount];
+  plane.Z = z;
+  std::copy(density, density + layer, plane.Density.begin());
+  std::copy(mask, mask + layer, plane.Mask.begin());
+  std::fill(plane.Moved.begin(), plane.Moved.end(), 0);
+  this->RelaxReady();
+  return this->Done;
+}
+
+//------------------------------------------------------------------------------
+// Relaxes the layers whose neighbors are all in (a layer no sample may move in
+// needs none), and returns those that became final: the one below each layer
+// relaxed, and a layer no sample may move in as soon as all before it are.
+void vtkBlueNoiseRelaxation::RelaxReady()
+{
+  for (; this->Relaxed <= this->Last; ++this->Relaxed)
+  {
+    const bool relaxable = this->Find(this->Relaxed)->Relaxable;
+    if (relaxable && this->Relaxed + MaximumRadius > this->Last)
+    {
+      break;
+    }
     this->RelaxLayer(this->Relaxed);
     if (this->Relaxed - 1 >= this->Finalized)
     {
       this->Release(this->Relaxed - 1);
     }
+    if (!relaxable && this->Relaxed == this->Finalized)
+    {
+      this->Release(this->Relaxed);
+    }
   }
-  return this->Done;
 }
 
 //------------------------------------------------------------------------------

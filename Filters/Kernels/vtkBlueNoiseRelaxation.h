@@ -35,7 +35,10 @@
  * Streaming: Push() one layer after another (densities and mask, x fastest);
  * once the layers from z - 1 to z + w are in, layer z is relaxed (its samples
  * may move into z - 1, z or z + 1) and layer z - 1 becomes final: Push
- * returns the final layers, and Flush() the rest after the last one. Memory:
+ * returns the final layers, and Flush() the rest after the last one. A layer
+ * with no density in (0, 1/4] is final once the layers before it are (no
+ * sample moves into or out of it); pushed then, it is returned as it came,
+ * its buffers the caller's. Memory:
  * the densities, masks and move flags (6 bytes a voxel) of the MaximumRadius
  * + 3 layers not yet final, and the masks as bits of 32 layers.
  *
@@ -62,7 +65,7 @@ public:
   {
     int Z = 0;
     const float* Density = nullptr;
-    unsigned char* Mask = nullptr; ///< writable: it is the pass's own copy
+    const unsigned char* Mask = nullptr;
     vtkIdType Count = 0;           ///< samples in the layer
   };
 
@@ -136,6 +139,7 @@ private:
   void Prefetch(int x, int y, int z);
   void RelaxSample(int x, int y, int z, float g);
   void Release(int z);
+  void RelaxReady();
 
   int NX = 0;
   int NY = 0;

@@ -3,8 +3,9 @@
 // vtkBlueNoiseRelaxation against its definition (the class comment), written
 // here the plain way: the whole volume in memory, the nearest sample by a loop
 // over the box around a voxel. Random masks over densities that vary by voxel
-// (within and beyond the move tolerance, above 1/4 and 0), at several
-// volume shapes (rows shorter and longer than a word), pushed layer by layer:
+// (within and beyond the move tolerance, above 1/4 and 0, and whole layers
+// where nothing moves), at several volume shapes (rows shorter and longer
+// than a word), pushed layer by layer:
 // the relaxed masks must be the same bit for bit, and the counts kept.
 #include "BlueNoiseTestUtilities.h"
 #include "vtkBlueNoiseRelaxation.h"
@@ -143,8 +144,9 @@ void Relax(Volume& v, std::uint64_t seed)
   }
 }
 
-// Densities: a few values per region, some within the tolerance of each other.
-Volume Random(int nx, int ny, int nz, std::uint32_t seed)
+// Densities: a few values per region, some within the tolerance of each other;
+// with `bands`, whole layers no sample may move in (0 and 0.3) between them.
+Volume Random(int nx, int ny, int nz, std::uint32_t seed, bool bands = false)
 {
   std::mt19937 random(seed);
   Volume v{ { nx, ny, nz }, {}, {} };
@@ -167,8 +169,8 @@ Volume Random(int nx, int ny, int nz, std::uint32_t seed)
       {
         const size_t r = x / block + (nx / block + 1) * (y / block + (ny / block + 1) * (z / block));
         const size_t i = v.Index(x, y, z);
-        v.Density[i] = region[r];
-        v.Mask[i] = unit(random) < 2.0f * std::max(region[r], 0.02f) ? 1 : 0;
+        v.Density[i] = !bands || (z / 4) % 3 == 0 ? region[r] : (z / 4) % 3 == 1 ? 0.0f : 0.3f;
+        v.Mask[i] = unit(random) < 2.0f * std::max(v.Density[i], 0.02f) ? 1 : 0;
       }
     }
   }
@@ -182,9 +184,11 @@ int main()
   const int shapes[][3] = { { 13, 11, 17 }, { 70, 9, 12 }, { 130, 6, 10 }, { 1, 1, 5 }, { 20, 8, 40 } };
   for (const auto& shape : shapes)
   {
-    for (std::uint64_t seed : { 1u, 77u })
+    for (std::uint64_t seed : { 1u, 77u, 5u })
     {
-      Volume v = Random(shape[0], shape[1], shape[2], static_cast<std::uint32_t>(seed + shape[0]));
+      // Seed 5: bands of 4 layers that relax, then 4 of 0, then 4 of 0.3.
+      Volume v =
+        Random(shape[0], shape[1], shape[2], static_cast<std::uint32_t>(seed + shape[0]), seed == 5);
       const auto count = std::count(v.Mask.begin(), v.Mask.end(), 1);
       const size_t layer = static_cast<size_t>(shape[0]) * shape[1];
       std::vector<unsigned char> relaxed(v.Mask.size(), 2);
