@@ -134,6 +134,7 @@ private:
   void Load(const std::vector<RowOffset>& rows, int x, int y);
   int Nearest(int fx, int fy, int fz, int enough) const;
   unsigned BlockedFaces(int x, int y) const;
+  unsigned CrowdedFaces(int reach) const;
   void SortOrder();
   void RelaxLayer(int z);
   void Prefetch(int x, int y, int z);

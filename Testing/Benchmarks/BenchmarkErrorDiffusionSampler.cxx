@@ -324,7 +324,7 @@ BENCHMARK(BM_Kernel)
   ->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_Relaxation)
   ->ArgNames({ "L", "g255" })
-  ->ArgsProduct({ { 256 }, { 8, 32 } })
+  ->ArgsProduct({ { 256 }, { 8, 32, 48 } })
   ->ComputeStatistics("min", Fastest)
   ->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_Plain)
