@@ -207,12 +207,20 @@ void vtkBlueNoiseRelaxation::SetDensity(float g)
     {
       if (dz * dz + dy * dy < cap)
       {
-        this->Rows.push_back({ dz, dy, dz * dz + dy * dy, dy * this->WordsPerRow });
+        this->Rows.push_back({ dz, dy, dz * dz + dy * dy, dy * this->WordsPerRow, dz * Span + dy });
       }
     }
   }
   std::stable_sort(this->Rows.begin(), this->Rows.end(),
     [](const RowOffset& a, const RowOffset& b) { return a.Squared < b.Squared; });
+  this->Shells.clear();
+  for (size_t k = 0; k < this->Rows.size(); ++k)
+  {
+    if (k + 1 == this->Rows.size() || this->Rows[k + 1].Squared != this->Rows[k].Squared)
+    {
+      this->Shells.push_back({ this->Rows[k].Squared, k + 1 });
+    }
+  }
   // The rows a face neighbor's search reads that the sample's does not.
   this->Around.clear();
   for (int dz = -radius - 1; dz <= radius + 1; ++dz)
@@ -226,7 +234,7 @@ void vtkBlueNoiseRelaxation::SetDensity(float g)
         (searched(dz - 1, dy) || searched(dz + 1, dy) || searched(dz, dy - 1) ||
           searched(dz, dy + 1)))
       {
-        this->Around.push_back({ dz, dy, dz * dz + dy * dy, dy * this->WordsPerRow });
+        this->Around.push_back({ dz, dy, dz * dz + dy * dy, dy * this->WordsPerRow, dz * Span + dy });
       }
     }
   }
@@ -245,7 +253,7 @@ void vtkBlueNoiseRelaxation::Load(const std::vector<RowOffset>& rows, int x, int
     const std::uint64_t* words = this->Layers[row.DZ + Reach] + word + row.Words;
     // The second word's part in two shifts: one by 64 - shift would be
     // undefined for shift = 0.
-    this->Window[(row.DZ + Reach) * Span + row.DY + Reach] =
+    this->Window[Reach * Span + Reach + row.Cell] =
       (words[0] >> shift) | ((words[1] << 1) << (63 - shift));
   }
 }
@@ -265,16 +273,20 @@ int vtkBlueNoiseRelaxation::Nearest(int fx, int fy, int fz, int enough) const
   const std::uint64_t left = std::uint64_t(1) << (62 - this->Radius);
   const std::uint64_t* window = this->Window + (fz + Reach) * Span + fy + Reach;
   int best = this->Cap;
-  for (const RowOffset& row : this->Rows)
+  size_t k = 0;
+  for (const Shell& shell : this->Shells) // the rows at one distance, without a test each
   {
-    if (row.Squared >= best || best <= enough)
+    if (shell.Squared >= best || best <= enough)
     {
       break;
     }
-    const std::uint64_t bits = window[row.DZ * Span + row.DY];
-    const int dx = std::min(
-      __builtin_ctzll((bits >> center) | right), __builtin_clzll((bits << (63 - center)) | left));
-    best = std::min(best, dx * dx + row.Squared);
+    for (; k < shell.End; ++k)
+    {
+      const std::uint64_t bits = window[this->Rows[k].Cell];
+      const int dx = std::min(
+        __builtin_ctzll((bits >> center) | right), __builtin_clzll((bits << (63 - center)) | left));
+      best = std::min(best, dx * dx + shell.Squared);
+    }
   }
   return best;
 }

@@ -122,6 +122,12 @@ private:
     int DY;
     int Squared; // dz^2 + dy^2
     int Words;   // dy rows of words
+    int Cell;    // dz * Span + dy: its place in the window from the center's
+  };
+  struct Shell // the rows at one distance, in Rows before End
+  {
+    int Squared;
+    std::size_t End;
   };
 
   Slot* Find(int z);
@@ -157,6 +163,7 @@ private:
   int Cap = 1;                // distances are counted up to this one (squared)
   std::vector<RowOffset> Rows;   // within Radius and nearer than Cap, nearest first
   std::vector<RowOffset> Around; // the other rows a face neighbor's search reads
+  std::vector<Shell> Shells;      // of Rows
   // The bits around the sample being relaxed: rows dz, dy in [-Reach, Reach]
   // (Reach = MaximumRadius + 1), each 64 voxels wide, the sample's x at bit 32.
   static constexpr int Reach = MaximumRadius + 1;
