@@ -194,10 +194,17 @@ void vtkBlueNoiseRelaxation::SetDensity(float g)
   // the radius can be found.
   const int cap = static_cast<int>(
     std::min(std::ceil(this->Limit), static_cast<double>((radius + 1) * (radius + 1))));
-  if (radius == this->Radius && cap == this->Cap && !this->Rows.empty())
+  if (radius != this->Radius || cap != this->Cap || this->Rows.empty())
   {
-    return;
+    this->SetRows(radius, cap);
   }
+}
+
+//------------------------------------------------------------------------------
+// The rows searched around a sample and its face neighbors, for a search
+// radius and cap.
+void vtkBlueNoiseRelaxation::SetRows(int radius, int cap)
+{
   this->Radius = radius;
   this->Cap = cap;
   this->Rows.clear();

@@ -137,6 +137,7 @@ private:
   bool Sample(int x, int y, int z);
   void Set(int x, int y, int z, bool sample);
   void SetDensity(float g);
+  void SetRows(int radius, int cap);
   void Load(const std::vector<RowOffset>& rows, int x, int y);
   int Nearest(int fx, int fy, int fz, int enough) const;
   unsigned BlockedFaces(int x, int y) const;
