@@ -141,9 +141,9 @@ public:
    * - METHOD_RELAXED_ERROR_DIFFUSION (default): the 3D error diffusion, then
    *   one sweep of one-voxel moves that spreads the samples closer than the
    *   blue-noise spacing (vtkBlueNoiseRelaxation, densities up to 1/4): less
-   *   low-frequency energy than a Poisson-disk set, the same count, in up to
-   *   1.7 times the time of METHOD_ERROR_DIFFUSION (3 times around g = 1/8,
-   *   where every eighth voxel is a sample to check);
+   *   low-frequency energy than a Poisson-disk set, the same count, in about
+   *   1.2 to 1.5 times the time of METHOD_ERROR_DIFFUSION (up to 2.5 times
+   *   around g = 1/5, where every fifth voxel is a sample to check);
    * - METHOD_ERROR_DIFFUSION: the paper's 3D error diffusion as it is;
    * - METHOD_WHITE_NOISE: hit-and-miss sampling, every voxel drawn on its own
    *   with probability g (white noise, the baseline of particle-based volume
