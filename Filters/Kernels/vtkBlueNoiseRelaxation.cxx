@@ -158,13 +158,6 @@ inline std::ptrdiff_t vtkBlueNoiseRelaxation::RowStart(int y) const
 }
 
 //------------------------------------------------------------------------------
-inline bool vtkBlueNoiseRelaxation::Sample(int x, int y, int z)
-{
-  const Slot* slot = this->Find(z);
-  return slot && (this->Row(slot->Bits.data(), y)[x >> 6] >> (x & 63)) & 1;
-}
-
-//------------------------------------------------------------------------------
 inline void vtkBlueNoiseRelaxation::Set(int x, int y, int z, bool sample)
 {
   Slot* slot = this->Find(z);
@@ -401,9 +394,9 @@ void vtkBlueNoiseRelaxation::RelaxSample(int x, int y, int z, float g)
 
 //------------------------------------------------------------------------------
 // Asks the cache for what RelaxLayer and RelaxSample will read around voxel
-// (x, y) of layer z: the densities of 11 layers do not fit in the second
-// level cache of 2 MiB at 256^2 voxels a layer.
-void vtkBlueNoiseRelaxation::Prefetch(int x, int y, int z)
+// (x, y) of the layer being relaxed (`plane`): the densities of 11 layers do
+// not fit in the second level cache of 2 MiB at 256^2 voxels a layer.
+void vtkBlueNoiseRelaxation::Prefetch(int x, int y, const Plane& plane)
 {
   const int reach = 2; // the rows of the nearest neighbors at the densities that cost most
   const std::ptrdiff_t word = this->RowStart(y) + (x >> 6);
@@ -422,10 +415,10 @@ void vtkBlueNoiseRelaxation::Prefetch(int x, int y, int z)
       __builtin_prefetch(density + i);
     }
   }
-  __builtin_prefetch(this->Densities[1] + (y > 0 ? i - this->NX : i));
-  __builtin_prefetch(this->Densities[1] + (y + 1 < this->NY ? i + this->NX : i));
-  __builtin_prefetch(this->Masks + i);
-  __builtin_prefetch(this->MovedFlags + i);
+  __builtin_prefetch(plane.Density.data() + (y > 0 ? i - this->NX : i));
+  __builtin_prefetch(plane.Density.data() + (y + 1 < this->NY ? i + this->NX : i));
+  __builtin_prefetch(plane.Mask.data() + i);
+  __builtin_prefetch(plane.Moved.data() + i);
 }
 
 //------------------------------------------------------------------------------
@@ -479,8 +472,6 @@ void vtkBlueNoiseRelaxation::RelaxLayer(int z)
     const Plane* near = z + dz >= this->Finalized ? this->FindPlane(z + dz) : nullptr;
     this->Densities[dz + 1] = near ? near->Density.data() : nullptr;
   }
-  this->Masks = plane->Mask.data();
-  this->MovedFlags = plane->Moved.data();
   const int words = (this->NX + 63) / 64;
   for (int y = 0; y < this->NY; ++y) // the samples, through the bits
   {
@@ -506,7 +497,7 @@ void vtkBlueNoiseRelaxation::RelaxLayer(int z)
     if (k + ahead < this->Order.size())
     {
       const auto i = static_cast<std::uint32_t>(this->Order[k + ahead]);
-      this->Prefetch(static_cast<int>(i % nx), static_cast<int>(i / nx), z);
+      this->Prefetch(static_cast<int>(i % nx), static_cast<int>(i / nx), *plane);
     }
     const auto i = static_cast<std::uint32_t>(this->Order[k]);
     // An earlier move may have taken this sample away, or put one here.

@@ -134,7 +134,6 @@ private:
   Plane* FindPlane(int z);
   const std::uint64_t* Row(const std::uint64_t* bits, int y) const;
   std::ptrdiff_t RowStart(int y) const;
-  bool Sample(int x, int y, int z);
   void Set(int x, int y, int z, bool sample);
   void SetDensity(float g);
   void SetRows(int radius, int cap);
@@ -144,7 +143,7 @@ private:
   unsigned CrowdedFaces(int reach) const;
   void SortOrder();
   void RelaxLayer(int z);
-  void Prefetch(int x, int y, int z);
+  void Prefetch(int x, int y, const Plane& plane);
   void RelaxSample(int x, int y, int z, float g);
   void Release(int z);
   void RelaxReady();
@@ -172,8 +171,6 @@ private:
   std::uint64_t Window[Span * Span];
   const std::uint64_t* Layers[Span]; // the bits of layers z - Reach ... z + Reach
   const float* Densities[3] = {};     // of layers z - 1, z, z + 1 where samples may move
-  const unsigned char* Masks = nullptr;
-  const unsigned char* MovedFlags = nullptr;
   std::vector<Slot> Ring;
   std::vector<Plane> Planes;
   std::vector<std::uint64_t> NoSamples; // the bits of a layer outside the ring
