@@ -10,6 +10,8 @@
 
 namespace
 {
+constexpr int SerialSize = 7; // doubles per bucket in Serialize()
+
 // Integral of clamp(u, 0, 1) from 0 to u.
 double ClampIntegral(double u)
 {
@@ -19,6 +21,39 @@ double ClampIntegral(double u)
   }
   return u < 1.0 ? 0.5 * u * u : u - 0.5;
 }
+}
+
+//------------------------------------------------------------------------------
+void vtkSamplingBudget::ExactSum::Add(std::int64_t v, std::uint64_t n)
+{
+  // |v| n as 128 bits from 32-bit halves, then negated for v < 0.
+  const std::uint64_t m = v < 0 ? 0u - static_cast<std::uint64_t>(v) : static_cast<std::uint64_t>(v);
+  const std::uint64_t m0 = m & 0xFFFFFFFFu, m1 = m >> 32, n0 = n & 0xFFFFFFFFu, n1 = n >> 32;
+  const std::uint64_t p00 = m0 * n0, p01 = m0 * n1, p10 = m1 * n0, p11 = m1 * n1;
+  const std::uint64_t middle = (p00 >> 32) + (p01 & 0xFFFFFFFFu) + (p10 & 0xFFFFFFFFu);
+  ExactSum product;
+  product.Low = (p00 & 0xFFFFFFFFu) | (middle << 32);
+  product.High = p11 + (p01 >> 32) + (p10 >> 32) + (middle >> 32);
+  if (v < 0)
+  {
+    product.Low = ~product.Low + 1u;
+    product.High = ~product.High + (product.Low == 0 ? 1u : 0u);
+  }
+  this->Add(product);
+}
+
+//------------------------------------------------------------------------------
+double vtkSamplingBudget::ExactSum::Value() const
+{
+  const bool negative = (this->High >> 63) != 0;
+  std::uint64_t low = this->Low, high = this->High;
+  if (negative)
+  {
+    low = ~low + 1u;
+    high = ~high + (low == 0 ? 1u : 0u);
+  }
+  const double magnitude = static_cast<double>(high) * 18446744073709551616.0 + static_cast<double>(low);
+  return negative ? -magnitude : magnitude;
 }
 
 //------------------------------------------------------------------------------
@@ -41,6 +76,20 @@ void vtkSamplingBudget::Reset()
 }
 
 //------------------------------------------------------------------------------
+// As Add, for |x| beyond the float range: values below 2^8 units, below 2^62
+// in 2^-54 units.
+void vtkSamplingBudget::AddBeyondFloat(double x, double n)
+{
+  const int i = BeyondFloatBucket(x);
+  Bucket& b = this->BucketAt(i);
+  b.Min = b.Count == 0.0 ? x : std::min(b.Min, x);
+  b.Max = b.Count == 0.0 ? x : std::max(b.Max, x);
+  b.Count += n;
+  const auto v = static_cast<std::int64_t>(x * PowerOfTwo(FixedPoint - UnitExponent(i)));
+  b.Sum.Add(v, static_cast<std::uint64_t>(n));
+}
+
+//------------------------------------------------------------------------------
 void vtkSamplingBudget::Merge(const vtkSamplingBudget& other)
 {
   other.ForEachUsed([this](int i, const Bucket& o) {
@@ -48,7 +97,7 @@ void vtkSamplingBudget::Merge(const vtkSamplingBudget& other)
     b.Min = b.Count == 0.0 ? o.Min : std::min(b.Min, o.Min);
     b.Max = b.Count == 0.0 ? o.Max : std::max(b.Max, o.Max);
     b.Count += o.Count;
-    b.Sum += o.Sum;
+    b.Sum.Add(o.Sum);
   });
   this->PositiveInfinities += other.PositiveInfinities;
   this->NegativeInfinities += other.NegativeInfinities;
@@ -102,12 +151,13 @@ double vtkSamplingBudget::Expected(double scale, const Mapping& map) const
 
 //------------------------------------------------------------------------------
 // The used buckets with their means (the sum over the count, back in the
-// values' units: no overflow).
+// values' units: no overflow; kept in [Min, Max] against rounding).
 std::vector<vtkSamplingBudget::Summary> vtkSamplingBudget::Summarize() const
 {
   std::vector<Summary> used;
   this->ForEachUsed([&used](int i, const Bucket& b) {
-    used.push_back({ b.Count, b.Sum / b.Count * UnitOf(i), b.Min, b.Max });
+    const double mean = b.Sum.Value() / b.Count * PowerOfTwo(UnitExponent(i) - FixedPoint);
+    used.push_back({ b.Count, std::min(std::max(mean, b.Min), b.Max), b.Min, b.Max });
   });
   return used;
 }
@@ -172,13 +222,16 @@ vtkSamplingBudget::Solution vtkSamplingBudget::Solve(double target, const Mappin
 //------------------------------------------------------------------------------
 std::vector<double> vtkSamplingBudget::Serialize() const
 {
-  std::vector<double> values(4 * static_cast<size_t>(NumberOfBuckets), 0.0);
+  std::vector<double> values(SerialSize * static_cast<size_t>(NumberOfBuckets), 0.0);
   this->ForEachUsed([&values](int i, const Bucket& b) {
-    double* v = values.data() + 4 * static_cast<size_t>(i);
+    double* v = values.data() + SerialSize * static_cast<size_t>(i);
     v[0] = b.Count;
-    v[1] = b.Sum;
-    v[2] = b.Min;
-    v[3] = b.Max;
+    v[1] = static_cast<double>(b.Sum.Low & 0xFFFFFFFFu);
+    v[2] = static_cast<double>(b.Sum.Low >> 32);
+    v[3] = static_cast<double>(b.Sum.High & 0xFFFFFFFFu);
+    v[4] = static_cast<double>(static_cast<std::int32_t>(b.Sum.High >> 32));
+    v[5] = b.Min;
+    v[6] = b.Max;
   });
   values.push_back(this->PositiveInfinities);
   values.push_back(this->NegativeInfinities);
@@ -188,17 +241,21 @@ std::vector<double> vtkSamplingBudget::Serialize() const
 //------------------------------------------------------------------------------
 bool vtkSamplingBudget::Deserialize(const std::vector<double>& values)
 {
-  if (values.size() != 4 * static_cast<size_t>(NumberOfBuckets) + 2)
+  if (values.size() != SerialSize * static_cast<size_t>(NumberOfBuckets) + 2)
   {
     return false;
   }
   this->Reset();
   for (int i = 0; i < NumberOfBuckets; ++i)
   {
-    const double* v = values.data() + 4 * static_cast<size_t>(i);
+    const double* v = values.data() + SerialSize * static_cast<size_t>(i);
     if (v[0] != 0.0) // an unused bucket allocates no page
     {
-      this->BucketAt(i) = Bucket{ v[0], v[1], v[2], v[3] };
+      ExactSum sum;
+      sum.Low = static_cast<std::uint64_t>(v[1]) | (static_cast<std::uint64_t>(v[2]) << 32);
+      sum.High = static_cast<std::uint64_t>(v[3]) |
+        (static_cast<std::uint64_t>(static_cast<std::int64_t>(v[4])) << 32);
+      this->BucketAt(i) = Bucket{ v[0], sum, v[5], v[6] };
     }
   }
   this->PositiveInfinities = values[values.size() - 2];

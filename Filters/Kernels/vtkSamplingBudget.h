@@ -16,15 +16,22 @@
  *
  * Histogram. 65536 buckets keyed by the top 16 bits of x as a float (sign,
  * exponent and 7 bits of mantissa, ordered like the values), each with the
- * count, sum, minimum and maximum of its values (the sum in units of the
- * bucket's power of two, 2^k for values in [2^k, 2^(k+1)): exact scaling,
- * no overflow near 1e308, no division per value): a bucket whose values are all
- * equal (every value of 8- and 16-bit data, and any value of fewer than 2^7
- * distinct values per power of two) is exact. NaN is not counted (its density
- * is 0); +inf and -inf are counted apart (density 1 and 0 for any s > 0).
- * Memory: up to 2 MiB, in pages of 256 buckets allocated when first used
- * (a small volume touches a few) and kept by Reset; merging two histograms
- * costs a pass over the used pages.
+ * count, sum, minimum and maximum of its values; values beyond the float range
+ * (|x| > 3.4e38) take the keys float's NaNs would have, one per 8 powers of
+ * two. A bucket whose values are all equal (every value of 8- and 16-bit data,
+ * and any value of fewer than 2^7 distinct values per power of two) is exact.
+ * NaN is not counted (its density is 0); +inf and -inf are counted apart
+ * (density 1 and 0 for any s > 0). Memory: up to 3 MiB, in pages of 256
+ * buckets allocated when first used (a small volume touches a few) and kept by
+ * Reset; merging two histograms costs a pass over the used pages.
+ *
+ * Exact sums. A bucket sums its values as integers: x in units of 2^-54 of
+ * the bucket's power of two (2^k for values in [2^k, 2^(k+1)); every double
+ * of the float range is such an integer but for those below 2^-180, which are
+ * truncated), added in 128 bits. The histogram is therefore the same, bit for
+ * bit, whatever the order the values come in: with any number of threads or
+ * vtkSMPTools backend, slab by slab, or merged from the pieces of several
+ * processes.
  *
  * Solve. Sum(s) = sum over buckets of: 0 where a Max + b <= 0, the count
  * where s (a Min + b) >= 1, and s Count (a Mean + b) where the whole bucket
@@ -52,10 +59,38 @@ class VTKFILTERSBLUENOISE_EXPORT vtkSamplingBudget
 public:
   static constexpr int NumberOfBuckets = 65536;
 
+  /// A sum of 64-bit integers, exact: 128-bit two's complement.
+  struct ExactSum
+  {
+    std::uint64_t Low = 0;
+    std::uint64_t High = 0;
+
+    void Add(std::int64_t v)
+    {
+      const std::uint64_t low = this->Low + static_cast<std::uint64_t>(v);
+      this->High += (v < 0 ? ~std::uint64_t(0) : 0u) + (low < this->Low ? 1u : 0u);
+      this->Low = low;
+    }
+    /// Add n times v.
+    void Add(std::int64_t v, std::uint64_t n);
+    void Add(const ExactSum& other)
+    {
+      const std::uint64_t low = this->Low + other.Low;
+      this->High += other.High + (low < this->Low ? 1u : 0u);
+      this->Low = low;
+    }
+    /// The sum, rounded to a double.
+    double Value() const;
+    bool operator==(const ExactSum& other) const
+    {
+      return this->Low == other.Low && this->High == other.High;
+    }
+  };
+
   struct Bucket
   {
     double Count = 0.0;
-    double Sum = 0.0; // in units of UnitOf(the bucket): a plain sum could overflow
+    ExactSum Sum; // the values in units of 2^-54 UnitOf(the bucket)
     double Min = 0.0;
     double Max = 0.0;
   };
@@ -80,23 +115,20 @@ public:
   /// Forget every value.
   void Reset();
 
-  /// The bucket of a value (NaN and infinities are not bucketed).
+  /// The bucket of a finite value (NaN and infinities are not bucketed).
   static int BucketOf(double x)
   {
-    const float f = static_cast<float>(x);
-    std::uint32_t bits = 0;
-    std::memcpy(&bits, &f, sizeof(bits));
-    // Order-preserving: negative values have their bits flipped, positive ones
-    // their sign set, so unsigned order is value order.
-    bits = (bits & 0x80000000u) ? ~bits : (bits | 0x80000000u);
-    return static_cast<int>(bits >> 16);
+    const std::uint32_t bits = FloatBits(x);
+    return ((bits >> 23) & 0xFFu) == 0xFFu ? BeyondFloatBucket(x) : Key(bits);
   }
 
-  /// The power of two a bucket's sum is counted in (its values' magnitude,
-  /// 2^-126 for zero and the float subnormals).
-  static double UnitOf(int bucket) { return PowerOfTwo(Exponent(bucket) - 127); }
+  /// The power of two of a bucket's values: 2^k for values in [2^k, 2^(k+1))
+  /// (2^-126 for zero and the float subnormals; beyond the float range, the
+  /// lowest of the bucket's 8 powers of two).
+  static double UnitOf(int bucket) { return PowerOfTwo(UnitExponent(bucket)); }
 
-  /// Count one value (n times); inline, as a pass calls it for every voxel.
+  /// Count one value (n times, n a whole count); inline, as a pass calls it
+  /// for every voxel.
   void Add(double x, double n = 1.0)
   {
     if (!std::isfinite(x))
@@ -107,12 +139,27 @@ public:
       }
       return;
     }
-    const int i = BucketOf(x);
-    Bucket& b = this->BucketAt(i);
+    const std::uint32_t bits = FloatBits(x);
+    const int field = static_cast<int>((bits >> 23) & 0xFFu); // float's exponent field
+    if (field == 0xFF)
+    {
+      this->AddBeyondFloat(x, n);
+      return;
+    }
+    Bucket& b = this->BucketAt(Key(bits));
     b.Min = b.Count == 0.0 ? x : std::min(b.Min, x);
     b.Max = b.Count == 0.0 ? x : std::max(b.Max, x);
     b.Count += n;
-    b.Sum += n * (x * PowerOfTwo(127 - Exponent(i))); // exact: a power of two
+    // |x| < 2 units: below 2^55 in 2^-54 units; scaling by a power of two is exact.
+    const auto v = static_cast<std::int64_t>(x * PowerOfTwo(FixedPoint + 127 - std::max(field, 1)));
+    if (n == 1.0)
+    {
+      b.Sum.Add(v);
+    }
+    else
+    {
+      b.Sum.Add(v, static_cast<std::uint64_t>(n));
+    }
   }
 
   /// Add another histogram (another piece or thread of the same volume).
@@ -127,8 +174,10 @@ public:
   /// The scale whose expected count is `target` (> 0).
   Solution Solve(double target, const Mapping& map) const;
 
-  /// For reductions across processes: the buckets' counts, sums, minima and
-  /// maxima, then +inf and -inf counts, as one flat array (and back).
+  /// For reductions across processes: per bucket the count, the sum (in four
+  /// 32-bit parts, low first, the last signed), the minimum and the maximum,
+  /// then the +inf and -inf counts, as one flat array of exact doubles (and
+  /// back).
   std::vector<double> Serialize() const;
   bool Deserialize(const std::vector<double>& values);
 
@@ -167,11 +216,36 @@ private:
   {
     double Count, Mean, Min, Max;
   };
-  // The float exponent field of a bucket's values, at least 1.
-  static int Exponent(int bucket)
+  static std::uint32_t FloatBits(double x)
+  {
+    const float f = static_cast<float>(x);
+    std::uint32_t bits = 0;
+    std::memcpy(&bits, &f, sizeof(bits));
+    return bits;
+  }
+  // Order-preserving: negative values have their bits flipped, positive ones
+  // their sign set, so unsigned order is value order.
+  static int Key(std::uint32_t bits)
+  {
+    bits = (bits & 0x80000000u) ? ~bits : (bits | 0x80000000u);
+    return static_cast<int>(bits >> 16);
+  }
+  // Beyond the float range: a key of float's NaNs, 0x7F80 + 1 + (k - 128) / 8
+  // for |x| in [2^k, 2^(k+1)).
+  static int BeyondFloatBucket(double x)
+  {
+    const auto k = static_cast<std::uint32_t>(std::max(std::ilogb(x), 128) - 128);
+    return Key((std::signbit(x) ? 0x80000000u : 0u) | ((0x7F81u + k / 8) << 16));
+  }
+  void AddBeyondFloat(double x, double n);
+  // A bucket's sum counts its values in units of 2^(UnitExponent - FixedPoint).
+  static constexpr int FixedPoint = 54;
+  // k of a bucket's values' 2^k (see UnitOf).
+  static int UnitExponent(int bucket)
   {
     const int bits = bucket >= 0x8000 ? bucket : ~bucket;
-    return std::max((bits >> 7) & 0xFF, 1);
+    const int field = (bits >> 7) & 0xFF; // the float exponent field
+    return field == 0xFF ? 128 + 8 * ((bits & 0x7F) - 1) : std::max(field, 1) - 127;
   }
   // 2^e for -1022 <= e <= 1023, built from its bits.
   static double PowerOfTwo(int e)

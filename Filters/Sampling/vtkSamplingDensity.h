@@ -68,8 +68,9 @@ public:
    * `ghosts`, indexed like the tuples) marks them as not owned are skipped.
    * The pass uses vtkSMPTools; with `threads` > 1 it is also split into that
    * many contiguous parts on threads of its own (for vtkSMPTools' Sequential
-   * backend), each counted apart and merged in order (not with a transfer
-   * function, whose evaluation is not known to be thread-safe).
+   * backend), each counted apart and merged (not with a transfer function,
+   * whose evaluation is not known to be thread-safe). The histogram's sums
+   * are exact, so neither split changes the result.
    */
   void CollectStatistics(vtkDataArray* array, vtkIdType begin, vtkIdType end,
     const unsigned char* ghosts, vtkSamplingBudget& statistics, int threads = 1) const;

@@ -6,11 +6,18 @@
 // of the same values as floats.
 #include "SamplerTestUtilities.h"
 #include "vtkDataArray.h"
+#include "vtkDoubleArray.h"
+#include "vtkFieldData.h"
 #include "vtkPointData.h"
 #include "vtkPoints.h"
 #include "vtkUnsignedShortArray.h"
 
+#include <cstdlib>
 #include <cstring>
+#include <iomanip>
+#include <random>
+#include <sstream>
+#include <string>
 
 using namespace bluenoise_test;
 
@@ -28,6 +35,13 @@ bool SamePoints(vtkPolyData* a, vtkPolyData* b)
   return n == 0 ||
     std::memcmp(pa->GetVoidPointer(0), pb->GetVoidPointer(0),
       static_cast<size_t>(n) * 3 * pa->GetDataTypeSize()) == 0;
+}
+
+std::string Exact(double x)
+{
+  std::ostringstream out;
+  out << std::setprecision(17) << x;
+  return out.str();
 }
 
 // The paper's error diffusion (the relaxation of the default method moves
@@ -139,6 +153,40 @@ int main()
       "16-bit values through the table give the points of the same values as floats, after a "
       "change of scale (" + Str(reused->GetOutput()->GetNumberOfPoints()) + " and " +
         Str(reference->GetNumberOfPoints()) + " points)");
+  }
+
+  // The point budget's scale is a function of the values alone: not of the
+  // threads the statistics pass splits them over, nor of the slabs they come
+  // in (doubles of full precision, whose sums in another order round
+  // differently; 2^20 voxels, so that the pass splits).
+  {
+    auto varied = vtkSmartPointer<vtkImageData>::New();
+    varied->SetDimensions(128, 128, 64);
+    vtkNew<vtkDoubleArray> values;
+    values->SetName("values");
+    values->SetNumberOfValues(varied->GetNumberOfPoints());
+    std::mt19937_64 random(5);
+    for (vtkIdType i = 0; i < values->GetNumberOfValues(); ++i)
+    {
+      values->SetValue(i, std::uniform_real_distribution<double>(0.0, 0.5)(random));
+    }
+    varied->GetPointData()->SetScalars(values);
+    const auto scaleOf = [&](const char* threads, int slabs) {
+      setenv("VTK_SMP_MAX_THREADS", threads, 1);
+      auto points = Sample(varied, [slabs](vtkErrorDiffusionSampler* s) {
+        s->UseNumberOfPointsOn();
+        s->SetNumberOfPoints(30000);
+        s->SetNumberOfSlabs(slabs);
+      });
+      unsetenv("VTK_SMP_MAX_THREADS");
+      return points->GetFieldData()->GetArray("DensityScale")->GetTuple1(0);
+    };
+    const double one = scaleOf("1", 1);
+    const double two = scaleOf("2", 1);
+    const double streamed = scaleOf("2", 7);
+    Check(one > 0.0 && one == two && one == streamed,
+      "the budget's scale with 1 and 2 threads and 7 slabs: " + Exact(one) + ", " + Exact(two) +
+        ", " + Exact(streamed));
   }
 
   // Complement: density g and 1 - g, same seed.

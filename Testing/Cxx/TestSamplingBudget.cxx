@@ -4,13 +4,16 @@
 // over many pages (both signs, tiny to huge, infinities, NaN) give the range
 // and the expected counts a direct sum gives; a histogram reset and reused,
 // a copy, and one serialized and read back are the same histogram bit for
-// bit; merged pieces equal the whole.
+// bit; merged pieces equal the whole; the same values in any order and split
+// in any pieces give the same histogram bit for bit (exact sums); values beyond
+// the float range (up to the largest double) keep their range and means.
 #include "BlueNoiseTestUtilities.h"
 #include "vtkSamplingBudget.h"
 
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <random>
 #include <vector>
 
 using namespace bluenoise_test;
@@ -108,5 +111,37 @@ int main()
   Check(merged.Expected(s, identity) == whole.Expected(s, identity) &&
       merged.Expected(0.5, identity) == whole.Expected(0.5, identity),
     "merged pieces expect what the whole does");
+
+  // Order: random doubles of many magnitudes, whose plain sums round
+  // differently in another order, added forwards and shuffled in three pieces.
+  std::mt19937_64 random(7);
+  std::vector<double> many;
+  for (int i = 0; i < 100000; ++i)
+  {
+    const double m = std::uniform_real_distribution<double>(-1.0, 1.0)(random);
+    many.push_back(std::ldexp(m, std::uniform_int_distribution<int>(-30, 30)(random)));
+  }
+  const vtkSamplingBudget forwards = Histogram(many);
+  std::shuffle(many.begin(), many.end(), random);
+  vtkSamplingBudget shuffled = Histogram(std::vector<double>(many.begin(), many.begin() + 777));
+  shuffled.Merge(Histogram(std::vector<double>(many.begin() + 777, many.begin() + 50001)));
+  shuffled.Merge(Histogram(std::vector<double>(many.begin() + 50001, many.end())));
+  Check(Same(forwards, shuffled), "shuffled values in three pieces: the same histogram");
+  Check(forwards.Solve(1234.5, identity).Scale == shuffled.Solve(1234.5, identity).Scale,
+    "and the same scale for a budget");
+
+  // Beyond the float range: the range, and the expected count at a scale that
+  // keeps every density below 1 (each value in a bucket of its own).
+  const std::vector<double> huge = { 1e39, 5e100, 3e300, std::numeric_limits<double>::max(),
+    -1e39, -std::numeric_limits<double>::max() };
+  const vtkSamplingBudget far = Histogram(huge);
+  Check(far.GetRange(range) && range[0] == -std::numeric_limits<double>::max() &&
+      range[1] == std::numeric_limits<double>::max(),
+    "the range up to the largest double: " + Str(range[0]) + " " + Str(range[1]));
+  const double tiny = 1e-309 / 4.0;
+  const double direct = tiny * 1e39 + tiny * 5e100 + tiny * 3e300 + tiny * huge[3];
+  const double farExpected = far.Expected(tiny, identity);
+  Check(std::abs(farExpected - direct) <= 1e-12 * direct,
+    "expected count beyond the float range: " + Str(farExpected) + ", direct sum " + Str(direct));
   return Summary("TestSamplingBudget");
 }
