@@ -66,8 +66,10 @@ int ParseOptions(int argc, char* argv[], Options& o)
 }
 
 // One comment line per level: the whole-volume figures the search minimized,
-// the start point's, and the interior's (faces cropped) of the result.
-std::string Comment(const LevelResult& r, const vtkErrorDiffusionOptimizer::Metrics& interior)
+// the start point's, and the interior's (faces cropped) of the result, or why
+// there are none (`interior` null: a cube too small to crop).
+std::string Comment(const LevelResult& r, const vtkErrorDiffusionOptimizer::Metrics* interior,
+  const std::string& noInterior)
 {
   std::ostringstream s;
   s.precision(6);
@@ -75,8 +77,17 @@ std::string Comment(const LevelResult& r, const vtkErrorDiffusionOptimizer::Metr
     << " L=" << r.OptimizedMetrics.LowFrequencyRatio << " S=" << r.OptimizedMetrics.Symmetry
     << " anisotropy_dB=" << r.OptimizedMetrics.AnisotropyDB << " (start T=" << r.StartMetrics.Target
     << " L=" << r.StartMetrics.LowFrequencyRatio << " S=" << r.StartMetrics.Symmetry
-    << ") interior T=" << interior.Target << " L=" << interior.LowFrequencyRatio
-    << " S=" << interior.Symmetry << " evaluations=" << r.Evaluations;
+    << ")";
+  if (interior)
+  {
+    s << " interior T=" << interior->Target << " L=" << interior->LowFrequencyRatio
+      << " S=" << interior->Symmetry;
+  }
+  else
+  {
+    s << " interior not measured (" << noInterior << ")";
+  }
+  s << " evaluations=" << r.Evaluations;
   return s.str();
 }
 
@@ -237,10 +248,11 @@ private:
       const double level = this->Todo[i];
       const LevelResult result = this->Optimize(level);
       vtkErrorDiffusionOptimizer::Evaluation interior;
-      vtkErrorDiffusionOptimizer::Evaluate(
+      std::string why;
+      const bool measured = vtkErrorDiffusionOptimizer::Evaluate(
         vtkErrorDiffusionOptimizer::SingleKeyTable(result.Optimized, level), level,
-        this->Settings, interior, true);
-      this->Finish(level, result, interior.Interior);
+        this->Settings, interior, true, &why);
+      this->Finish(level, result, measured ? &interior.Interior : nullptr, why);
     }
   }
 
@@ -266,10 +278,10 @@ private:
 
   // Adds a finished level to the table and writes the table, one thread at a time.
   void Finish(double level, const LevelResult& result,
-    const vtkErrorDiffusionOptimizer::Metrics& interior)
+    const vtkErrorDiffusionOptimizer::Metrics* interior, const std::string& noInterior)
   {
     std::lock_guard<std::mutex> guard(this->Lock);
-    this->Done[level] = { result.Optimized, Comment(result, interior) };
+    this->Done[level] = { result.Optimized, Comment(result, interior, noInterior) };
     const double seconds =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - this->Begin).count();
     std::cout << this->Done[level].second << " [" << seconds << " s]" << std::endl;

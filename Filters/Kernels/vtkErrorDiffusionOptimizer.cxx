@@ -8,6 +8,7 @@
 
 #include <cmath>
 #include <limits>
+#include <string>
 #include <vector>
 
 namespace
@@ -149,7 +150,8 @@ bool vtkErrorDiffusionOptimizer::Evaluate(const vtkErrorDiffusionParameterTable&
   {
     if (error)
     {
-      *error = "CropFaces leaves less than 4 voxels";
+      *error = "a cube of " + std::to_string(settings.GridSize) + " voxels less " +
+        std::to_string(settings.CropFaces) + " at each face leaves less than 4";
     }
     return false;
   }
