@@ -604,6 +604,37 @@ bool MetaImageDataFile(const std::string& path, TextHeader& header, std::string&
 }
 }
 
+namespace
+{
+using Fields = std::map<std::string, std::string>;
+
+// Where and how the values lie in the data file, for reading a slab of them.
+bool MetaImageRaw(Fields& f, const std::string& data, double skip,
+  const Declared& d, size_t rank, Volume& volume, std::string& error)
+{
+  RawLayout& raw = volume.Raw;
+  raw.DataFile = data;
+  // HeaderSize -1: the data are the file's last bytes.
+  raw.HeaderBytes = f["headersize"] == "-1"
+    ? static_cast<double>(FileSize(data)) - static_cast<double>(volume.Voxels) * volume.BytesPerVoxel
+    : skip;
+  raw.ScalarType = MetaType(f["elementtype"]).second;
+  raw.Components = static_cast<int>(d.Components);
+  raw.BigEndian = Lower(f["binarydatabyteordermsb"]) == "true" ||
+    Lower(f["elementbyteordermsb"]) == "true";
+  const std::string origin =
+    f.count("offset") ? f["offset"] : f.count("origin") ? f["origin"] : f["position"];
+  if (!origin.empty() && (!Reals(origin, rank, raw.Origin, "Offset", error) ||
+                           !std::isfinite(raw.Origin[0] + raw.Origin[1] + raw.Origin[2])))
+  {
+    error = "Offset '" + origin + "' is not finite";
+    return false;
+  }
+  std::copy(d.Spacing, d.Spacing + 3, raw.Spacing);
+  return true;
+}
+}
+
 bool CheckMetaImage(const std::string& path, Volume& volume, bool& streamable, std::string& error)
 {
   std::string head;
@@ -663,30 +694,7 @@ bool CheckMetaImage(const std::string& path, Volume& volume, bool& streamable, s
   }
   volume.Format = "MetaImage";
   streamable = !d.Compressed && Lower(f["binarydata"]) != "false";
-  if (!CheckDeclared(d, volume, error))
-  {
-    return false;
-  }
-  RawLayout& raw = volume.Raw;
-  raw.DataFile = data;
-  // HeaderSize -1: the data are the file's last bytes.
-  raw.HeaderBytes = f["headersize"] == "-1"
-    ? static_cast<double>(FileSize(data)) - static_cast<double>(volume.Voxels) * volume.BytesPerVoxel
-    : skip;
-  raw.ScalarType = MetaType(f["elementtype"]).second;
-  raw.Components = static_cast<int>(d.Components);
-  raw.BigEndian = Lower(f["binarydatabyteordermsb"]) == "true" ||
-    Lower(f["elementbyteordermsb"]) == "true";
-  const std::string origin =
-    f.count("offset") ? f["offset"] : f.count("origin") ? f["origin"] : f["position"];
-  if (!origin.empty() && (!Reals(origin, r, raw.Origin, "Offset", error) ||
-                           !std::isfinite(raw.Origin[0] + raw.Origin[1] + raw.Origin[2])))
-  {
-    error = "Offset '" + origin + "' is not finite";
-    return false;
-  }
-  std::copy(d.Spacing, d.Spacing + 3, raw.Spacing);
-  return true;
+  return CheckDeclared(d, volume, error) && MetaImageRaw(f, data, skip, d, r, volume, error);
 }
 
 //------------------------------------------------------------------------------
@@ -710,28 +718,11 @@ double NrrdTypeSize(std::string type)
 }
 }
 
-bool CheckNRRD(const std::string& path, Volume& volume, bool& streamable, std::string& error)
+namespace
 {
-  std::string head;
-  TextHeader header;
-  if (!ReadHead(path, 65536, false, head, error))
-  {
-    return false;
-  }
-  if (head.compare(0, 7, "NRRD000") != 0)
-  {
-    error = "no NRRD magic line (NRRD000x)";
-    return false;
-  }
-  const bool terminated = ParseTextHeader(head, ": ", "", true, header);
-  // vtkNrrdReader reads the header as a C string: a NUL byte in it made the
-  // reader loop for ever (found by the fuzzer).
-  if (head.find('\0') < header.Length)
-  {
-    error = "the NRRD header contains a NUL byte";
-    return false;
-  }
-  auto& f = header.Fields;
+// The axes (dimension, sizes, spacings) as vtkNrrdReader lays them out.
+bool NRRDAxes(Fields& f, Declared& d, std::string& error)
+{
   double rank = 0;
   // One axis is not a volume, and VTK 9.2's vtkNrrdReader crashes on it
   // (reading past its buffer; found by the volume-loader fuzzer in CI).
@@ -759,7 +750,6 @@ bool CheckNRRD(const std::string& path, Volume& volume, bool& streamable, std::s
   // vtkNrrdReader's guess, followed so that both agree on the layout: the
   // first axis holds the components when there are four axes, when it has
   // at most 9 entries, or when its spacing is 0.
-  Declared d;
   const int first = rank > 3 || sizes[0] <= 9 || spacing[0] == 0 ? 1 : 0;
   d.Components = first ? sizes[0] : 1.0;
   for (int i = first; i < rank; ++i)
@@ -767,16 +757,24 @@ bool CheckNRRD(const std::string& path, Volume& volume, bool& streamable, std::s
     d.Dimensions[i - first] = sizes[i];
     d.Spacing[i - first] = spacing[i];
   }
+  return true;
+}
+
+// The values: type and encoding, and the data file (this one after the
+// header when none is named) with the bytes it holds after `byte skip`.
+bool NRRDData(const std::string& path, Fields& f, const TextHeader& header, bool terminated,
+  Declared& d, bool& raw, std::string& error)
+{
   d.BytesPerValue = NrrdTypeSize(f["type"]);
   const std::string encoding = Lower(f["encoding"]);
-  if (d.BytesPerValue == 0.0 || (encoding != "raw" && encoding != "ascii" && encoding != "text" &&
-                                  encoding != "txt"))
+  raw = encoding == "raw";
+  if (d.BytesPerValue == 0.0 || (!raw && encoding != "ascii" && encoding != "text" && encoding != "txt"))
   {
     error = "type '" + f["type"] + "' or encoding '" + f["encoding"] +
       "' is not supported (numeric types, raw or ascii encoding)";
     return false;
   }
-  if (encoding != "raw")
+  if (!raw)
   {
     d.BytesPerValue = 1.0; // at least one character a value
   }
@@ -798,12 +796,38 @@ bool CheckNRRD(const std::string& path, Volume& volume, bool& streamable, std::s
     return false;
   }
   const std::string data = file.empty() ? path : Relative(path, file);
-  if (!DataFileSize(data, skip + (file.empty() ? header.Length : 0), d.Available, error))
+  return DataFileSize(data, skip + (file.empty() ? header.Length : 0), d.Available, error);
+}
+}
+
+bool CheckNRRD(const std::string& path, Volume& volume, bool& streamable, std::string& error)
+{
+  std::string head;
+  TextHeader header;
+  if (!ReadHead(path, 65536, false, head, error))
+  {
+    return false;
+  }
+  if (head.compare(0, 7, "NRRD000") != 0)
+  {
+    error = "no NRRD magic line (NRRD000x)";
+    return false;
+  }
+  const bool terminated = ParseTextHeader(head, ": ", "", true, header);
+  // vtkNrrdReader reads the header as a C string: a NUL byte in it made the
+  // reader loop for ever (found by the fuzzer).
+  if (head.find('\0') < header.Length)
+  {
+    error = "the NRRD header contains a NUL byte";
+    return false;
+  }
+  Declared d;
+  if (!NRRDAxes(header.Fields, d, error) ||
+    !NRRDData(path, header.Fields, header, terminated, d, streamable, error))
   {
     return false;
   }
   volume.Format = "NRRD";
-  streamable = encoding == "raw";
   return CheckDeclared(d, volume, error);
 }
 

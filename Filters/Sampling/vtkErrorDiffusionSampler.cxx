@@ -317,8 +317,7 @@ bool vtkErrorDiffusionSampler::ReduceStatistics(vtkSamplingBudget&)
 }
 
 //------------------------------------------------------------------------------
-// The plan of a run: the piece's layers, the overlap above it, and the steps
-// (statistics slabs, then sampling slabs), each one input request.
+// The request of the run's current step (planned first when the run starts).
 int vtkErrorDiffusionSampler::RequestUpdateExtent(
   vtkInformation* request, vtkInformationVector** inputVector, vtkInformationVector* outputVector)
 {
@@ -334,57 +333,20 @@ int vtkErrorDiffusionSampler::RequestUpdateExtent(
   otherInfo->CopyEntry(outInfo, SDDP::UPDATE_NUMBER_OF_GHOST_LEVELS());
   vtkInformation* inInfo = inputVector[0]->GetInformationObject(0);
   vtkInternals& run = *this->Internals;
-  const auto sddp = vtkStreamingDemandDrivenPipeline::UPDATE_EXTENT();
   int whole[6] = { 0, -1, 0, -1, 0, -1 };
-  inInfo->Get(vtkStreamingDemandDrivenPipeline::WHOLE_EXTENT(), whole);
+  inInfo->Get(SDDP::WHOLE_EXTENT(), whole);
   if (run.Running && !std::equal(whole, whole + 6, run.Whole))
   {
     run.Running = false; // the plan of another input
   }
   if (!run.Running)
   {
-    std::copy(whole, whole + 6, run.Whole);
-    const int piece = outInfo->Has(vtkStreamingDemandDrivenPipeline::UPDATE_PIECE_NUMBER())
-      ? outInfo->Get(vtkStreamingDemandDrivenPipeline::UPDATE_PIECE_NUMBER())
-      : 0;
-    const int pieces = outInfo->Has(vtkStreamingDemandDrivenPipeline::UPDATE_NUMBER_OF_PIECES())
-      ? outInfo->Get(vtkStreamingDemandDrivenPipeline::UPDATE_NUMBER_OF_PIECES())
+    const int piece =
+      outInfo->Has(SDDP::UPDATE_PIECE_NUMBER()) ? outInfo->Get(SDDP::UPDATE_PIECE_NUMBER()) : 0;
+    const int pieces = outInfo->Has(SDDP::UPDATE_NUMBER_OF_PIECES())
+      ? outInfo->Get(SDDP::UPDATE_NUMBER_OF_PIECES())
       : 1;
-    run.Piece = pieces > 1;
-    std::copy(run.Whole, run.Whole + 6, run.Sampled);
-    const auto parts = SplitLayers(run.Whole[4], run.Whole[5], pieces);
-    const bool emptyPiece = piece >= static_cast<int>(parts.size());
-    run.Sampled[4] = emptyPiece ? 0 : parts[piece][0];
-    run.Sampled[5] = emptyPiece ? -1 : parts[piece][1];
-    // The whole-volume methods take their piece at once, without overlap.
-    const bool whole =
-      this->Method == METHOD_POISSON_DISK || this->Method == METHOD_SAMPLE_ELIMINATION;
-    const int slabs = whole ? 1 : this->NumberOfSlabs;
-    run.Relaxing = this->Method == METHOD_RELAXED_ERROR_DIFFUSION;
-    run.ScanFirst =
-      std::max(run.Whole[4], run.Sampled[4] - (run.Piece && !whole ? this->OverlapLayers : 0));
-    run.Steps.clear();
-    run.Current = 0;
-    vtkSamplingDensity probe;
-    probe.SetMapping(this->DensityMapping, this->Component, this->TransferFunction);
-    if (this->UseCustomScalarRange)
-    {
-      probe.SetRange(this->ScalarRange[0], this->ScalarRange[1]);
-    }
-    run.NeedsStatistics = probe.NeedsStatistics(this->UseNumberOfPoints);
-    if (run.NeedsStatistics)
-    {
-      int first = 0, last = -1;
-      this->GetStatisticsLayers(run.Whole, piece, pieces, first, last);
-      for (const auto& slab : SplitLayers(first, last, slabs))
-      {
-        run.Steps.push_back({ true, slab[0], slab[1] });
-      }
-    }
-    for (const auto& slab : SplitLayers(run.ScanFirst, run.Sampled[5], slabs))
-    {
-      run.Steps.push_back({ false, slab[0], slab[1] });
-    }
+    this->PlanRun(whole, piece, pieces);
   }
   int extent[6] = { 0, -1, 0, -1, 0, -1 };
   if (run.Current < run.Steps.size())
@@ -395,13 +357,57 @@ int vtkErrorDiffusionSampler::RequestUpdateExtent(
   // the pipeline translated the piece into for that port.
   const int empty[6] = { 0, -1, 0, -1, 0, -1 };
   vtkInformation* maskInfo = outputVector->GetInformationObject(1);
-  maskInfo->Set(sddp, this->GenerateMask ? run.Sampled : empty, 6);
+  maskInfo->Set(SDDP::UPDATE_EXTENT(), this->GenerateMask ? run.Sampled : empty, 6);
   // The request is the extent alone: the piece is already in it.
-  inInfo->Set(sddp, extent, 6);
-  inInfo->Set(vtkStreamingDemandDrivenPipeline::UPDATE_PIECE_NUMBER(), 0);
-  inInfo->Set(vtkStreamingDemandDrivenPipeline::UPDATE_NUMBER_OF_PIECES(), 1);
-  inInfo->Set(vtkStreamingDemandDrivenPipeline::UPDATE_NUMBER_OF_GHOST_LEVELS(), 0);
+  inInfo->Set(SDDP::UPDATE_EXTENT(), extent, 6);
+  inInfo->Set(SDDP::UPDATE_PIECE_NUMBER(), 0);
+  inInfo->Set(SDDP::UPDATE_NUMBER_OF_PIECES(), 1);
+  inInfo->Set(SDDP::UPDATE_NUMBER_OF_GHOST_LEVELS(), 0);
   return 1;
+}
+
+//------------------------------------------------------------------------------
+// The plan of a run: the piece's layers, the overlap above it, and the steps
+// (statistics slabs, then sampling slabs), each one input request.
+void vtkErrorDiffusionSampler::PlanRun(const int whole[6], int piece, int pieces)
+{
+  vtkInternals& run = *this->Internals;
+  std::copy(whole, whole + 6, run.Whole);
+  run.Piece = pieces > 1;
+  std::copy(run.Whole, run.Whole + 6, run.Sampled);
+  const auto parts = SplitLayers(run.Whole[4], run.Whole[5], pieces);
+  const bool emptyPiece = piece >= static_cast<int>(parts.size());
+  run.Sampled[4] = emptyPiece ? 0 : parts[piece][0];
+  run.Sampled[5] = emptyPiece ? -1 : parts[piece][1];
+  // The whole-volume methods take their piece at once, without overlap.
+  const bool atOnce =
+    this->Method == METHOD_POISSON_DISK || this->Method == METHOD_SAMPLE_ELIMINATION;
+  const int slabs = atOnce ? 1 : this->NumberOfSlabs;
+  run.Relaxing = this->Method == METHOD_RELAXED_ERROR_DIFFUSION;
+  run.ScanFirst =
+    std::max(run.Whole[4], run.Sampled[4] - (run.Piece && !atOnce ? this->OverlapLayers : 0));
+  run.Steps.clear();
+  run.Current = 0;
+  vtkSamplingDensity probe;
+  probe.SetMapping(this->DensityMapping, this->Component, this->TransferFunction);
+  if (this->UseCustomScalarRange)
+  {
+    probe.SetRange(this->ScalarRange[0], this->ScalarRange[1]);
+  }
+  run.NeedsStatistics = probe.NeedsStatistics(this->UseNumberOfPoints);
+  if (run.NeedsStatistics)
+  {
+    int first = 0, last = -1;
+    this->GetStatisticsLayers(run.Whole, piece, pieces, first, last);
+    for (const auto& slab : SplitLayers(first, last, slabs))
+    {
+      run.Steps.push_back({ true, slab[0], slab[1] });
+    }
+  }
+  for (const auto& slab : SplitLayers(run.ScanFirst, run.Sampled[5], slabs))
+  {
+    run.Steps.push_back({ false, slab[0], slab[1] });
+  }
 }
 
 //------------------------------------------------------------------------------

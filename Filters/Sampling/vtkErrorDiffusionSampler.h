@@ -402,6 +402,7 @@ private:
 
   bool IsAborted();
   bool ValidateProperties();
+  void PlanRun(const int whole[6], int piece, int pieces);
   bool StartRun(vtkInformation* outInfo, vtkInformationVector** inputVector);
   bool Advance(vtkImageData* input, vtkInformationVector** inputVector);
   bool CollectStatistics(vtkImageData* input, vtkInformationVector** inputVector);
