@@ -104,6 +104,46 @@ void vtkSamplingBudget::Merge(const vtkSamplingBudget& other)
 }
 
 //------------------------------------------------------------------------------
+// Each bucket's values as Add counts them: a float of exponent field e >= 1
+// and mantissa m is v = (2^23 + m) 2^31 in the bucket's 2^-54 units (m 2^31
+// for e = 0), where m = (the key's 7 bits) 2^16 + (its low 16 bits).
+void vtkSamplingBudget::Merge(const FloatTally& tally)
+{
+  const auto value = [](std::uint32_t ordered) {
+    const std::uint32_t bits = (ordered & 0x80000000u) ? (ordered & 0x7FFFFFFFu) : ~ordered;
+    float x = 0.0f;
+    std::memcpy(&x, &bits, sizeof(x));
+    return static_cast<double>(x);
+  };
+  for (int i = 0; i < NumberOfBuckets; ++i)
+  {
+    const FloatTally::Entry& e = tally.Entries[i];
+    if (e.Count == 0)
+    {
+      continue;
+    }
+    const auto key = static_cast<std::uint32_t>(i) << 16;
+    const double lo = value(key | e.MinLow);
+    const double hi = value(key | e.MaxLow);
+    Bucket& b = this->BucketAt(i);
+    b.Min = b.Count == 0.0 ? lo : std::min(b.Min, lo);
+    b.Max = b.Count == 0.0 ? hi : std::max(b.Max, hi);
+    b.Count += static_cast<double>(e.Count);
+    // The bits of a negative value are the order-preserving ones flipped.
+    const bool negative = (key & 0x80000000u) == 0;
+    const std::uint32_t bits = negative ? ~key : (key & 0x7FFFFFFFu);
+    const std::uint32_t field = (bits >> 23) & 0xFFu;
+    const std::int64_t base =
+      static_cast<std::int64_t>((field ? 0x800000u : 0u) | (bits & 0x7F0000u)) << 31;
+    const std::uint64_t lows = negative ? 0xFFFFu * e.Count - e.SumOfLow : e.SumOfLow;
+    b.Sum.Add(negative ? -base : base, e.Count);
+    b.Sum.Add(negative ? -(std::int64_t(1) << 31) : (std::int64_t(1) << 31), lows);
+  }
+  this->PositiveInfinities += static_cast<double>(tally.Infinities[0]);
+  this->NegativeInfinities += static_cast<double>(tally.Infinities[1]);
+}
+
+//------------------------------------------------------------------------------
 bool vtkSamplingBudget::GetRange(double range[2]) const
 {
   bool any = false;

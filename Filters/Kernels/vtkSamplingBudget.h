@@ -165,6 +165,49 @@ public:
   /// Add another histogram (another piece or thread of the same volume).
   void Merge(const vtkSamplingBudget& other);
 
+  /**
+   * Float values counted by their bits, to be merged into a budget at once:
+   * the histogram Add gives the same values, bit for bit, for a fraction of
+   * the cost (integer work: the bucket is the top 16 bits, the sum and
+   * extremes those of the low 16). Memory: 1.5 MiB.
+   */
+  class FloatTally
+  {
+  public:
+    FloatTally() : Entries(NumberOfBuckets) {}
+    /// Count x n times (callers count runs of equal values: volumes have them).
+    void Add(float x, std::uint64_t n = 1)
+    {
+      std::uint32_t bits = 0;
+      std::memcpy(&bits, &x, sizeof(bits));
+      if ((bits & 0x7F800000u) == 0x7F800000u) // infinities (NaN is not counted)
+      {
+        this->Infinities[bits >> 31] += (bits & 0x007FFFFFu) == 0 ? n : 0u;
+        return;
+      }
+      const std::uint32_t ordered = (bits & 0x80000000u) ? ~bits : (bits | 0x80000000u);
+      Entry& e = this->Entries[ordered >> 16];
+      const auto low = static_cast<std::uint16_t>(ordered);
+      e.Count += n;
+      e.SumOfLow += low * n;
+      e.MinLow = std::min(e.MinLow, low);
+      e.MaxLow = std::max(e.MaxLow, low);
+    }
+
+  private:
+    friend class vtkSamplingBudget;
+    struct Entry
+    {
+      std::uint64_t Count = 0;
+      std::uint64_t SumOfLow = 0; // of the order-preserving bits' low 16
+      std::uint16_t MinLow = 0xFFFF;
+      std::uint16_t MaxLow = 0;
+    };
+    std::vector<Entry> Entries; // by bucket
+    std::uint64_t Infinities[2] = { 0, 0 }; // +inf, -inf
+  };
+  void Merge(const FloatTally& tally);
+
   /// Finite range of the values counted; false when there is none.
   bool GetRange(double range[2]) const;
 

@@ -12,6 +12,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
+#include <cstring>
 #include <limits>
 #include <thread>
 #include <type_traits>
@@ -38,6 +40,16 @@ double TupleValue(const TupleT& tuple, int component)
   return std::sqrt(sum);
 }
 
+void AddRun(vtkSamplingBudget::FloatTally& tally, std::uint32_t bits, std::uint64_t length)
+{
+  if (length > 0)
+  {
+    float x = 0.0f;
+    std::memcpy(&x, &bits, sizeof(x));
+    tally.Add(x, length);
+  }
+}
+
 // Small integer types are counted per value first: exact, and a fraction of
 // the cost of bucketing every value.
 template <typename T>
@@ -58,6 +70,14 @@ struct StatisticsWorker
       if (component >= 0)
       {
         this->CountValues(array, begin, end, component, ghosts, function, out);
+        return;
+      }
+    }
+    if constexpr (std::is_same<T, float>::value)
+    {
+      if (component >= 0 && !function)
+      {
+        this->TallyFloats(array, begin, end, component, ghosts, out);
         return;
       }
     }
@@ -93,6 +113,43 @@ struct StatisticsWorker
         out.Add(x);
       }
       ++t;
+    }
+  }
+
+  // A float component: tallied by its bits (vtkSamplingBudget::FloatTally).
+  template <typename ArrayT>
+  void TallyFloats(ArrayT* array, vtkIdType begin, vtkIdType end, int component,
+    const unsigned char* ghosts, vtkSamplingBudget& out) const
+  {
+    vtkSMPThreadLocal<vtkSamplingBudget::FloatTally> local;
+    const auto all = vtk::DataArrayValueRange(array);
+    const int nc = array->GetNumberOfComponents();
+    vtkSMPTools::For(begin, end, 65536, [&](vtkIdType first, vtkIdType last) {
+      vtkSamplingBudget::FloatTally& tally = local.Local();
+      // Runs of equal values (by their bits) counted at once.
+      std::uint32_t run = 0;
+      std::uint64_t length = 0;
+      for (vtkIdType t = first; t < last; ++t)
+      {
+        if (!(ghosts && (ghosts[t] & NotOwned)))
+        {
+          const float x = all[t * nc + component];
+          std::uint32_t bits = 0;
+          std::memcpy(&bits, &x, sizeof(bits));
+          if (bits != run || length == 0)
+          {
+            AddRun(tally, run, length);
+            run = bits;
+            length = 0;
+          }
+          ++length;
+        }
+      }
+      AddRun(tally, run, length);
+    });
+    for (const auto& tally : local)
+    {
+      out.Merge(tally);
     }
   }
 

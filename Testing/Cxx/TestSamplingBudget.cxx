@@ -130,6 +130,33 @@ int main()
   Check(forwards.Solve(1234.5, identity).Scale == shuffled.Solve(1234.5, identity).Scale,
     "and the same scale for a budget");
 
+  // Floats tallied by their bits: the histogram of Add, bit for bit (both
+  // signs, zeros, subnormals, the largest floats, infinities, NaN).
+  std::vector<float> floats;
+  for (double v : many)
+  {
+    floats.push_back(static_cast<float>(v));
+  }
+  for (float v : { 0.0f, -0.0f, 1e-45f, -3e-42f, 1e-38f, 3.4e38f, -3.4e38f, 1.0f, 1.0f })
+  {
+    floats.push_back(v);
+  }
+  floats.push_back(std::numeric_limits<float>::infinity());
+  floats.push_back(-std::numeric_limits<float>::infinity());
+  floats.push_back(std::numeric_limits<float>::quiet_NaN());
+  vtkSamplingBudget added;
+  vtkSamplingBudget::FloatTally tally;
+  for (float v : floats)
+  {
+    added.Add(v);
+    tally.Add(v);
+  }
+  added.Add(-0.3f, 1000.0); // a run of equal values
+  tally.Add(-0.3f, 1000);
+  vtkSamplingBudget tallied;
+  tallied.Merge(tally);
+  Check(Same(added, tallied), "floats tallied by their bits: the histogram of Add");
+
   // Beyond the float range: the range, and the expected count at a scale that
   // keeps every density below 1 (each value in a bucket of its own).
   const std::vector<double> huge = { 1e39, 5e100, 3e300, std::numeric_limits<double>::max(),
