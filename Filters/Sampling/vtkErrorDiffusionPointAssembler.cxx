@@ -11,6 +11,7 @@
 #include "vtkMatrix3x3.h"
 #include "vtkPointData.h"
 #include "vtkPoints.h"
+#include "vtkPolyData.h"
 #include "vtkTypeInt32Array.h"
 #include "vtkTypeInt64Array.h"
 
@@ -60,6 +61,21 @@ void ReserveUninitialized(vtkAbstractArray* array, vtkIdType tuples)
 {
   const int components = std::max(1, array->GetNumberOfComponents());
   const int valueSize = array->GetDataTypeSize();
+  if (array->GetSize() > 0) // a recycled array: grown in place (realloc), its pages kept
+  {
+    if (array->GetSize() / components < tuples)
+    {
+      try
+      {
+        array->Resize(tuples);
+      }
+      catch (const std::bad_alloc&)
+      {
+        // EnsureTuples grows the array later.
+      }
+    }
+    return;
+  }
   for (; tuples > 0; tuples /= 4)
   {
     const size_t bytes = static_cast<size_t>(tuples) * components * valueSize;
@@ -190,12 +206,16 @@ void vtkErrorDiffusionPointAssembler::Begin(
   this->Jitter = false;
   this->OutputPointData = outPD;
 
-  this->Coordinates = vtkSmartPointer<vtkDataArray>::Take(
-    pointsType == VTK_DOUBLE ? static_cast<vtkDataArray*>(vtkDoubleArray::New())
-                             : static_cast<vtkDataArray*>(vtkFloatArray::New()));
-  this->Coordinates->SetNumberOfComponents(3);
+  if (pointsType == VTK_DOUBLE)
+  {
+    this->Coordinates = this->NewOrRecycled<vtkDoubleArray>("points", 3);
+  }
+  else
+  {
+    this->Coordinates = this->NewOrRecycled<vtkFloatArray>("points", 3);
+  }
   this->Coordinates->SetName("Points");
-  this->Densities = vtkSmartPointer<vtkFloatArray>::New();
+  this->Densities = this->NewOrRecycled<vtkFloatArray>("array Density", 1);
   this->Densities->SetName("Density");
 
   // Every image array with one tuple per point gets a copy of the same kind,
@@ -219,7 +239,18 @@ void vtkErrorDiffusionPointAssembler::Begin(
       this->Skipped.emplace_back(source->GetName() ? source->GetName() : "(unnamed)");
       continue;
     }
-    auto target = vtkSmartPointer<vtkAbstractArray>::Take(source->NewInstance());
+    // A recycled array of the same kind, unless either carries component
+    // names or information (the copy could keep stale ones).
+    vtkSmartPointer<vtkAbstractArray> target;
+    if (source->GetName() && !source->HasAComponentName() && !source->HasInformation())
+    {
+      target = this->TakeRecycled(std::string("array ") + source->GetName(),
+        source->GetClassName(), source->GetNumberOfComponents());
+    }
+    if (!target || target->HasAComponentName() || target->HasInformation())
+    {
+      target = vtkSmartPointer<vtkAbstractArray>::Take(source->NewInstance());
+    }
     target->SetName(source->GetName());
     target->SetNumberOfComponents(source->GetNumberOfComponents());
     target->CopyComponentNames(source);
@@ -417,7 +448,79 @@ vtkSmartPointer<vtkPoints> vtkErrorDiffusionPointAssembler::End()
   this->Sources.clear();
   this->Targets.clear();
   this->OutputPointData = nullptr;
+  // The output holds the arrays alone (see Recycle).
+  this->Coordinates = nullptr;
+  this->Densities = nullptr;
   return points;
+}
+
+//------------------------------------------------------------------------------
+void vtkErrorDiffusionPointAssembler::Recycle(vtkPolyData* previous)
+{
+  this->Recycled.clear();
+  if (!previous)
+  {
+    return;
+  }
+  // Held by `previous` alone: the container by it, the array by the container.
+  const auto keep = [this](vtkObject* container, vtkAbstractArray* array, const std::string& role) {
+    if (container && container->GetReferenceCount() == 1 && array &&
+      array->GetReferenceCount() == 1)
+    {
+      this->Recycled.push_back({ role, array });
+    }
+  };
+  if (vtkPoints* points = previous->GetPoints())
+  {
+    keep(points, points->GetData(), "points");
+  }
+  vtkPointData* pd = previous->GetPointData();
+  for (int a = 0; a < pd->GetNumberOfArrays(); ++a)
+  {
+    vtkAbstractArray* array = pd->GetAbstractArray(a);
+    if (array && array->GetName())
+    {
+      keep(pd, array, std::string("array ") + array->GetName());
+    }
+  }
+  if (vtkCellArray* verts = previous->GetVerts())
+  {
+    keep(verts, verts->GetOffsetsArray(), "vertex offsets");
+    keep(verts, verts->GetConnectivityArray(), "vertex connectivity");
+  }
+}
+
+//------------------------------------------------------------------------------
+vtkSmartPointer<vtkAbstractArray> vtkErrorDiffusionPointAssembler::TakeRecycled(
+  const std::string& role, const char* className, int components)
+{
+  for (auto it = this->Recycled.begin(); it != this->Recycled.end(); ++it)
+  {
+    if (it->Role == role && std::strcmp(it->Array->GetClassName(), className) == 0 &&
+      it->Array->GetNumberOfComponents() == components)
+    {
+      vtkSmartPointer<vtkAbstractArray> array = it->Array;
+      this->Recycled.erase(it);
+      return array;
+    }
+  }
+  return nullptr;
+}
+
+//------------------------------------------------------------------------------
+template <typename ArrayT>
+vtkSmartPointer<ArrayT> vtkErrorDiffusionPointAssembler::NewOrRecycled(
+  const std::string& role, int components)
+{
+  auto fresh = vtkSmartPointer<ArrayT>::New();
+  vtkSmartPointer<ArrayT> array =
+    ArrayT::SafeDownCast(this->TakeRecycled(role, fresh->GetClassName(), components));
+  if (!array)
+  {
+    fresh->SetNumberOfComponents(components);
+    return fresh;
+  }
+  return array;
 }
 
 //------------------------------------------------------------------------------
@@ -432,15 +535,20 @@ vtkSmartPointer<vtkCellArray> vtkErrorDiffusionPointAssembler::MakeVertices(vtkI
     connectivity->SetNumberOfValues(n);
     std::iota(offsets->GetPointer(0), offsets->GetPointer(0) + n + 1, ValueT(0));
     std::iota(connectivity->GetPointer(0), connectivity->GetPointer(0) + n, ValueT(0));
+    offsets->Squeeze(); // a recycled array may be larger
+    connectivity->Squeeze();
     verts->SetData(offsets, connectivity);
   };
   if (n < VTK_TYPE_INT32_MAX)
   {
-    fill(vtkSmartPointer<vtkTypeInt32Array>::New(), vtkSmartPointer<vtkTypeInt32Array>::New());
+    fill(this->NewOrRecycled<vtkTypeInt32Array>("vertex offsets", 1),
+      this->NewOrRecycled<vtkTypeInt32Array>("vertex connectivity", 1));
   }
   else
   {
-    fill(vtkSmartPointer<vtkTypeInt64Array>::New(), vtkSmartPointer<vtkTypeInt64Array>::New());
+    fill(this->NewOrRecycled<vtkTypeInt64Array>("vertex offsets", 1),
+      this->NewOrRecycled<vtkTypeInt64Array>("vertex connectivity", 1));
   }
+  this->Recycled.clear(); // the last user of a run's recycled arrays
   return verts;
 }

@@ -52,6 +52,7 @@ class vtkFloatArray;
 class vtkImageData;
 class vtkPointData;
 class vtkPoints;
+class vtkPolyData;
 
 class VTKFILTERSBLUENOISE_EXPORT vtkErrorDiffusionPointAssembler
 {
@@ -105,7 +106,18 @@ public:
    * One vertex cell per point, for n points (32-bit storage when it fits,
    * to halve the memory). Does not depend on a Begin() or End().
    */
-  static vtkSmartPointer<vtkCellArray> MakeVertices(vtkIdType n);
+  vtkSmartPointer<vtkCellArray> MakeVertices(vtkIdType n);
+
+  /**
+   * Keeps the arrays of an earlier output that nothing else holds (its
+   * points, point arrays and vertices: each held by that output alone), so
+   * that Begin() and MakeVertices() grow them in place instead of
+   * allocating: a re-execution writes into memory already committed, where
+   * fresh memory costs the kernel's zeroing of every page (as much as the
+   * scan itself at 512^3 and density 1/2). Call before emptying `previous`;
+   * what is not used by the next Begin() and MakeVertices() is released.
+   */
+  void Recycle(vtkPolyData* previous);
 
 private:
   void Reserve(vtkIdType tuples);
@@ -126,6 +138,18 @@ private:
   std::vector<vtkAbstractArray*> Targets; // their copies in the output
   std::vector<int> SourceIndices;         // where each source is in the image's point data
   std::vector<std::string> Skipped;
+  // Arrays of an earlier output until used or released, by role: "points",
+  // "vertex offsets", "vertex connectivity", or "array " and the name.
+  struct Kept
+  {
+    std::string Role;
+    vtkSmartPointer<vtkAbstractArray> Array;
+  };
+  std::vector<Kept> Recycled;
+  vtkSmartPointer<vtkAbstractArray> TakeRecycled(
+    const std::string& role, const char* className, int components);
+  template <typename ArrayT>
+  vtkSmartPointer<ArrayT> NewOrRecycled(const std::string& role, int components);
   std::vector<vtkIdType> LayerIds; // in-layer indices of one layer's samples
   std::vector<vtkIdType> RowEnds;  // where each row's samples end in LayerIds
 };

@@ -347,6 +347,9 @@ int vtkErrorDiffusionSampler::RequestUpdateExtent(
       ? outInfo->Get(SDDP::UPDATE_NUMBER_OF_PIECES())
       : 1;
     this->PlanRun(whole, piece, pieces);
+    // The last output's arrays that nothing else holds are written again
+    // (the executive empties the output before RequestData).
+    run.Assembler.Recycle(vtkPolyData::GetData(outputVector, 0));
   }
   int extent[6] = { 0, -1, 0, -1, 0, -1 };
   if (run.Current < run.Steps.size())
@@ -872,8 +875,7 @@ void vtkErrorDiffusionSampler::FinishOutput(
       }
     }
     run.Points->SetPoints(run.Assembler.End());
-    run.Points->SetVerts(
-      vtkErrorDiffusionPointAssembler::MakeVertices(run.Points->GetNumberOfPoints()));
+    run.Points->SetVerts(run.Assembler.MakeVertices(run.Points->GetNumberOfPoints()));
   }
   output->ShallowCopy(run.Points);
 
@@ -964,6 +966,7 @@ int vtkErrorDiffusionSampler::RequestData(
     run.Running = false;
     run.Points = nullptr;
     run.Mask = nullptr;
+    run.Assembler.Recycle(nullptr);
     output->Initialize();
     mask->Initialize();
     request->Remove(continueKey);

@@ -5,6 +5,8 @@
 // seed: complementary masks (the mirrored process). 16-bit values: the points
 // of the same values as floats.
 #include "SamplerTestUtilities.h"
+#include "vtkCallbackCommand.h"
+#include "vtkCommand.h"
 #include "vtkDataArray.h"
 #include "vtkDoubleArray.h"
 #include "vtkFieldData.h"
@@ -117,6 +119,40 @@ int main()
   sampler->SetSeed(7);
   sampler->Update();
   Check(SamePoints(sampler->GetOutput(), first), "seed restored gives the first points again");
+
+  // A re-execution writes into the last output's arrays when nothing else
+  // holds them (the same array objects), and leaves alone what another
+  // object holds: a shallow copy keeps its points.
+  {
+    // (Deleted arrays are counted: a new array could get an old one's address.)
+    int deleted = 0;
+    vtkNew<vtkCallbackCommand> onDelete;
+    onDelete->SetCallback([](vtkObject*, unsigned long, void* count, void*) { ++*static_cast<int*>(count); });
+    onDelete->SetClientData(&deleted);
+    vtkDataArray* before = sampler->GetOutput()->GetPoints()->GetData();
+    vtkDataArray* densityBefore = sampler->GetOutput()->GetPointData()->GetArray("Density");
+    before->AddObserver(vtkCommand::DeleteEvent, onDelete);
+    densityBefore->AddObserver(vtkCommand::DeleteEvent, onDelete);
+    sampler->SetSeed(8);
+    sampler->Update();
+    Check(deleted == 0 && sampler->GetOutput()->GetPoints()->GetData() == before &&
+        sampler->GetOutput()->GetPointData()->GetArray("Density") == densityBefore &&
+        SamePoints(sampler->GetOutput(), c),
+      "a re-execution reuses the arrays nothing else holds, with the right points (" +
+        Str(deleted) + " deleted)");
+    if (deleted == 0)
+    {
+      before->RemoveObservers(vtkCommand::DeleteEvent);
+      densityBefore->RemoveObservers(vtkCommand::DeleteEvent);
+    }
+    vtkNew<vtkPolyData> held;
+    held->ShallowCopy(sampler->GetOutput());
+    sampler->SetSeed(7);
+    sampler->Update();
+    Check(SamePoints(held, c) && SamePoints(sampler->GetOutput(), first) &&
+        sampler->GetOutput()->GetPoints()->GetData() != held->GetPoints()->GetData(),
+      "a shallow copy of the last output keeps its points through a re-execution");
+  }
 
   // 16-bit values on layers of 512^2 go through a table of densities kept
   // from layer to layer: the same points as the same values in floats, and a
