@@ -40,6 +40,65 @@ double TupleValue(const TupleT& tuple, int component)
   return std::sqrt(sum);
 }
 
+// Counts of 8- or 16-bit values: CountLanes(T) tables of Values(T) counts,
+// laid one after the other (8-bit values in four interleaved tables:
+// consecutive equal values, a background, would otherwise each wait for the
+// increment before).
+template <typename T>
+constexpr size_t Values()
+{
+  return static_cast<size_t>(1) << (8 * sizeof(T));
+}
+template <typename T>
+constexpr size_t CountLanes()
+{
+  return sizeof(T) == 1 ? 4 : 1;
+}
+template <typename T>
+constexpr int ValueOffset() // added to a value to index its count
+{
+  return std::is_signed<T>::value ? -static_cast<int>(std::numeric_limits<T>::min()) : 0;
+}
+
+// Adds the values of one component over tuples [begin, end) to `table`
+// (CountLanes x Values counts), ghosts skipped.
+template <typename T, typename RangeT>
+void CountComponent(const RangeT& all, int nc, int component, vtkIdType begin, vtkIdType end,
+  const unsigned char* ghosts, std::uint64_t* table)
+{
+  constexpr size_t lanes = CountLanes<T>();
+  const auto index = [&](vtkIdType t) {
+    return static_cast<size_t>(static_cast<int>(all[t * nc + component]) + ValueOffset<T>());
+  };
+  vtkIdType t = begin;
+  if (!ghosts)
+  {
+    for (; t + static_cast<vtkIdType>(lanes) <= end; t += lanes)
+    {
+      for (size_t l = 0; l < lanes; ++l)
+      {
+        ++table[l * Values<T>() + index(t + l)];
+      }
+    }
+  }
+  for (; t < end; ++t)
+  {
+    table[index(t)] += (ghosts && (ghosts[t] & NotOwned)) ? 0u : 1u;
+  }
+}
+
+// The count of value index v over the lanes of `table`.
+template <typename T>
+std::uint64_t CountOf(const std::vector<std::uint64_t>& table, size_t v)
+{
+  std::uint64_t n = 0;
+  for (size_t l = 0; l < CountLanes<T>(); ++l)
+  {
+    n += table[l * Values<T>() + v];
+  }
+  return n;
+}
+
 void AddRun(vtkSamplingBudget::FloatTally& tally, std::uint32_t bits, std::uint64_t length)
 {
   if (length > 0)
@@ -158,40 +217,33 @@ struct StatisticsWorker
     const unsigned char* ghosts, vtkPiecewiseFunction* function, vtkSamplingBudget& out) const
   {
     using T = vtk::GetAPIType<ArrayT>;
-    constexpr int offset = std::is_signed<T>::value ? -static_cast<int>(std::numeric_limits<T>::min()) : 0;
-    constexpr size_t values = static_cast<size_t>(1) << (8 * sizeof(T));
-    using Counts = std::vector<double>;
-    vtkSMPThreadLocal<Counts> local;
+    using Table = std::vector<std::uint64_t>;
+    vtkSMPThreadLocal<Table> local;
     const auto all = vtk::DataArrayValueRange(array);
     const int nc = array->GetNumberOfComponents();
     vtkSMPTools::For(begin, end, 65536, [&](vtkIdType first, vtkIdType last) {
-      Counts& counts = local.Local();
-      counts.resize(values, 0.0);
-      for (vtkIdType t = first; t < last; ++t)
-      {
-        if (!(ghosts && (ghosts[t] & NotOwned)))
-        {
-          counts[static_cast<int>(all[t * nc + component]) + offset] += 1.0;
-        }
-      }
+      Table& table = local.Local();
+      table.resize(CountLanes<T>() * Values<T>(), 0);
+      CountComponent<T>(all, nc, component, first, last, ghosts, table.data());
     });
-    Counts total(values, 0.0);
-    for (const Counts& counts : local)
+    std::vector<std::uint64_t> total(Values<T>(), 0);
+    for (const Table& table : local)
     {
-      for (size_t i = 0; i < counts.size(); ++i)
+      for (size_t v = 0; v < Values<T>(); ++v)
       {
-        total[i] += counts[i];
+        total[v] += CountOf<T>(table, v);
       }
     }
-    for (size_t i = 0; i < values; ++i)
+    for (size_t i = 0; i < Values<T>(); ++i)
     {
-      if (total[i] > 0.0)
+      if (total[i] > 0)
       {
-        const double v = static_cast<double>(static_cast<int>(i) - offset);
-        out.Add(function ? function->GetValue(v) : v, total[i]);
+        const double v = static_cast<double>(static_cast<int>(i) - ValueOffset<T>());
+        out.Add(function ? function->GetValue(v) : v, static_cast<double>(total[i]));
       }
     }
   }
+
 };
 
 struct FillWorker
@@ -315,21 +367,21 @@ struct FillWorker
       cache.Scale = scale;
     }
     const std::vector<float>& table = cache.Density;
-    std::vector<vtkIdType>& counts = cache.Counts;
-    counts.assign(values, 0);
     const auto all = vtk::DataArrayValueRange(array);
     const int nc = array->GetNumberOfComponents();
     for (vtkIdType t = begin; t < end; ++t)
     {
       const int v = static_cast<int>(all[t * nc + component]) + offset;
-      const bool owned = !(ghosts && (ghosts[t] & NotOwned));
-      out[t - begin] = owned ? table[v] : 0.0f;
-      counts[v] += owned;
+      out[t - begin] = (ghosts && (ghosts[t] & NotOwned)) ? 0.0f : table[v];
     }
+    // The sum from the counts per value (exact), in a pass of its own.
+    std::vector<std::uint64_t>& counts = cache.Counts;
+    counts.assign(CountLanes<T>() * values, 0);
+    CountComponent<T>(all, nc, component, begin, end, ghosts, counts.data());
     double total = 0.0;
     for (size_t v = 0; v < values; ++v)
     {
-      total += static_cast<double>(counts[v]) * table[v];
+      total += static_cast<double>(CountOf<T>(counts, v)) * table[v];
     }
     return total;
   }

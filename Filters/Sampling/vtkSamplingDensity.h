@@ -31,6 +31,7 @@
 #include "vtkSamplingBudget.h"         // for vtkSamplingBudget::Mapping
 #include "vtkType.h"                   // for vtkIdType
 
+#include <cstdint>
 #include <vector> // for std::vector
 
 class vtkDataArray;
@@ -113,7 +114,7 @@ public:
     int Type = -1; // VTK type of the values, -1 for none
     double A = 0.0, B = 0.0, Scale = 0.0;
     std::vector<float> Density;
-    std::vector<vtkIdType> Counts; // per value, in the layer being filled
+    std::vector<std::uint64_t> Counts; // per value, in the layer being filled (in lanes)
   };
 
 private:
