@@ -148,8 +148,9 @@ struct vtkErrorDiffusionLayerRunner::ThreadState
   LayerCounter Consumed; // layers whose buffers are free again
   Failure Failed;
   std::vector<vtkIdType> Counts;
-  const int ToFill; // layers to fill: the run's, and its last one's successor if any
-  int Next = 0;     // the next layer to fill (by one thread only)
+  const int ToFill;      // layers to fill: the run's, and its last one's successor if any
+  std::mutex Filling;    // held by the thread that fills; guards Next
+  int Next = 0;          // the next layer to fill
 };
 
 //------------------------------------------------------------------------------
@@ -283,7 +284,8 @@ bool vtkErrorDiffusionLayerRunner::RunThreaded(vtkErrorDiffusionKernel& kernel)
 
 //------------------------------------------------------------------------------
 // The layers below `target` filled (at most all of them), each into a slot
-// whose layer was consumed; false when the run stopped.
+// whose layer was consumed; false when the run stopped. The caller holds
+// state.Filling.
 bool vtkErrorDiffusionLayerRunner::FillUpTo(ThreadState& state, int target)
 {
   for (target = std::min(target, state.ToFill); state.Next < target; ++state.Next)
@@ -299,8 +301,25 @@ bool vtkErrorDiffusionLayerRunner::FillUpTo(ThreadState& state, int target)
 }
 
 //------------------------------------------------------------------------------
+// The calling thread, idle: fills the next layer if no one is filling and
+// its slot is free (without waiting); false when there was nothing to do.
+bool vtkErrorDiffusionLayerRunner::FillOneAhead(ThreadState& state)
+{
+  std::unique_lock<std::mutex> lock(state.Filling, std::try_to_lock);
+  if (!lock.owns_lock() || state.Next >= state.ToFill ||
+    state.Consumed.Get() < state.Next - this->Slots + 1)
+  {
+    return false;
+  }
+  this->Fill(state.Next, this->DensitySlot(state.Next));
+  ++state.Next;
+  state.Filled.Advance(state.Next);
+  return true;
+}
+
+//------------------------------------------------------------------------------
 // The scan thread: every layer once its densities and its successor's are
-// filled (by this thread with FillOnScanThread), then Finish.
+// filled (by itself when the calling thread has not), then Finish.
 void vtkErrorDiffusionLayerRunner::ScanAll(vtkErrorDiffusionKernel& kernel, ThreadState& state)
 {
   try
@@ -308,12 +327,15 @@ void vtkErrorDiffusionLayerRunner::ScanAll(vtkErrorDiffusionKernel& kernel, Thre
     vtkIdType total = 0;
     for (int k = 0; k < this->Layers; ++k)
     {
-      const bool ready = this->FillOnScanThread
-        ? this->FillUpTo(state, k + 2)
-        : state.Filled.WaitFor(std::min(k + 2, state.ToFill), state.Failed.Stop);
-      if (!ready)
+      // Layers k and k + 1 filled: by the other thread, or now by this one.
+      const int need = std::min(k + 2, state.ToFill);
+      if (state.Filled.Get() < need)
       {
-        return;
+        std::lock_guard<std::mutex> lock(state.Filling);
+        if (!this->FillUpTo(state, need))
+        {
+          return;
+        }
       }
       const vtkIdType count = this->ScanLayer(kernel, k);
       total += count;
@@ -332,16 +354,18 @@ void vtkErrorDiffusionLayerRunner::ScanAll(vtkErrorDiffusionKernel& kernel, Thre
 }
 
 //------------------------------------------------------------------------------
-// The calling thread: fills ahead (unless the scan thread does) and consumes
-// behind, in order; false when the consumer stopped or anything threw.
+// The calling thread: consumes the layers in order, filling ahead while it
+// waits for the next; false when the consumer stopped or anything threw.
 bool vtkErrorDiffusionLayerRunner::ConsumeAll(ThreadState& state)
 {
   try
   {
     for (int k = 0; k < this->Layers; ++k)
     {
-      const bool consumed = (this->FillOnScanThread || this->FillUpTo(state, k + this->Slots)) &&
-        state.Scanned.WaitFor(k + 1, state.Failed.Stop) &&
+      while (state.Scanned.Get() < k + 1 && !state.Failed.Stop.load() && this->FillOneAhead(state))
+      {
+      }
+      const bool consumed = state.Scanned.WaitFor(k + 1, state.Failed.Stop) &&
         this->Consume(this->LayerOf(k, state.Counts[k % this->Slots]));
       state.Consumed.Advance(k + 1);
       if (!consumed)

@@ -8,12 +8,15 @@
  * The error-diffusion scan is sequential, but preparing its input (mapping
  * the values of a layer to densities) and using its result (turning the
  * samples of a layer into points and attributes) are not: with
- * SetThreaded(true) the scan runs on a worker thread and does nothing else,
- * while the calling thread fills the densities of the layers ahead of it and
- * consumes, in order, the layers behind it (or, where consuming costs more
- * than scanning, the worker fills too: SetFillOnScanThread). The calling thread is the one
- * that fills and consumes, so a consumer may report progress and check for
- * abort the way a VTK filter must (from the thread that called it).
+ * SetThreaded(true) the scan runs on a worker thread while the calling thread
+ * consumes, in order, the layers behind it. Whichever thread would otherwise
+ * wait fills the densities of the layers ahead: the calling thread while the
+ * next layer is not scanned yet, the scan thread when the layer it needs is
+ * not filled yet, so the filling goes to the side with time to spare (the
+ * scan's, where consuming costs more, as the relaxation does; the calling
+ * thread's otherwise). The calling thread is the one that consumes, so a
+ * consumer may report progress and check for abort the way a VTK filter must
+ * (from the thread that called it).
  *
  * Per layer k (0-based in the run) the runner asks Fill(k, density) for the
  * densities (the kernel also needs the next layer's, so Fill runs at least one
@@ -34,8 +37,8 @@
  * the same order either way. Memory: a ring of 8 layers of densities and
  * masks when threaded, 2 when not.
  *
- * Fill and Consume run on the calling thread (Fill on the scan thread with
- * SetFillOnScanThread(true)); MaskStorage, BeforeScan and Finish on the scan
+ * Consume runs on the calling thread; Fill on either thread, one call at a
+ * time, in layer order; MaskStorage, BeforeScan and Finish on the scan
  * thread, and must not touch what the others touch. An
  * exception thrown by any callback stops the run; Run then returns false and
  * GetError() says what was thrown.
@@ -78,13 +81,6 @@ public:
   void SetBeforeScan(BeforeScanFunction f) { this->BeforeScan = std::move(f); }
   void SetThreaded(bool threaded) { this->Threaded = threaded; }
   bool GetThreaded() const { return this->Threaded; }
-  /**
-   * Threaded runs only: the scan thread fills the densities too, and the
-   * calling thread only consumes. For consumers whose work outweighs the
-   * scan's (the relaxation of the default method); Fill then runs on the scan
-   * thread. Off by default.
-   */
-  void SetFillOnScanThread(bool scanThreadFills) { this->FillOnScanThread = scanThreadFills; }
 
   /**
    * Samples nz layers of nx * ny voxels with a kernel on which Begin() was
@@ -104,6 +100,7 @@ private:
   bool RunThreaded(vtkErrorDiffusionKernel& kernel);
   struct ThreadState;
   bool FillUpTo(ThreadState& state, int target);
+  bool FillOneAhead(ThreadState& state);
   void ScanAll(vtkErrorDiffusionKernel& kernel, ThreadState& state);
   bool ConsumeAll(ThreadState& state);
   vtkIdType ScanLayer(vtkErrorDiffusionKernel& kernel, int k);
@@ -116,7 +113,6 @@ private:
   FinishFunction Finish;
   BeforeScanFunction BeforeScan;
   bool Threaded = false;
-  bool FillOnScanThread = false;
   std::string Error;
 
   // The layers of one Run and their ring of buffers.

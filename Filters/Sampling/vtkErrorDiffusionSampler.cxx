@@ -728,8 +728,6 @@ bool vtkErrorDiffusionSampler::ScanSlab(vtkImageData* input, vtkDataArray* array
   runner.SetThreaded(this->UseWorkerThread && layers > 1 &&
     layer * layers >= MinimumVoxelsForWorkerThread &&
     AvailableThreads() > 1);
-  // The relaxation makes consuming a layer cost more than scanning it.
-  runner.SetFillOnScanThread(this->Method == METHOD_RELAXED_ERROR_DIFFUSION);
   runner.SetFill([&](int k, float* density) {
     const int z = step.First + k;
     const vtkIdType begin = (z - extent[4]) * layer;

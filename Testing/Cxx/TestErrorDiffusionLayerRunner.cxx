@@ -3,12 +3,17 @@
 // vtkErrorDiffusionLayerRunner: on one thread or two, the layers reach the
 // consumer in order with the masks a plain ProcessLayer loop gives; a consumer
 // that says stop, or a callback that throws, ends the run cleanly; Finish gets
-// the total; MaskStorage receives the masks.
+// the total; MaskStorage receives the masks. Threaded, the densities are
+// filled one layer at a time, in order, by whichever thread has time: the scan
+// thread when the consumer is slow, the calling thread when the scan is.
 #include "BlueNoiseTestUtilities.h"
 #include "vtkErrorDiffusionKernel.h"
 #include "vtkErrorDiffusionLayerRunner.h"
 
+#include <atomic>
+#include <chrono>
 #include <stdexcept>
+#include <thread>
 #include <vector>
 
 using namespace bluenoise_test;
@@ -72,9 +77,13 @@ struct Outcome
   vtkIdType Counted = 0;
   vtkIdType Finished = -1;
   bool DensitiesRight = true;
+  bool FillsInOrder = true;  // one at a time, layer after layer
+  int FilledByCaller = 0;    // layers filled on the calling thread
+  int FilledElsewhere = 0;   // on the scan thread
 };
 
-// mode 0: one thread; 1: two threads; 2: two, the scan thread filling too.
+// mode 0: one thread; 1: two threads; 2: two, the consumer slow; 3: two, the
+// scan slow.
 Outcome RunWith(int mode, int stopAt = -1, int throwInFill = -1, int throwInConsume = -1,
   bool external = false)
 {
@@ -83,14 +92,24 @@ Outcome RunWith(int mode, int stopAt = -1, int throwInFill = -1, int throwInCons
   auto kernel = MakeKernel();
   vtkErrorDiffusionLayerRunner runner;
   runner.SetThreaded(mode > 0);
-  runner.SetFillOnScanThread(mode == 2);
+  const auto caller = std::this_thread::get_id();
+  std::atomic<int> filling{ 0 };
+  int nextFill = 0;
   runner.SetFill([&](int z, float* out) {
+    o.FillsInOrder = o.FillsInOrder && filling.fetch_add(1) == 0 && z == nextFill++;
+    (std::this_thread::get_id() == caller ? o.FilledByCaller : o.FilledElsewhere)++;
     if (z == throwInFill)
     {
+      filling.fetch_sub(1);
       throw std::runtime_error("fill failed");
     }
     FillLayer(z, out);
+    filling.fetch_sub(1);
   });
+  if (mode == 3)
+  {
+    runner.SetBeforeScan([](int, const float*) { std::this_thread::sleep_for(std::chrono::milliseconds(2)); });
+  }
   if (external)
   {
     runner.SetMaskStorage([&](int z) { return o.Mask.data() + z * LayerSize; });
@@ -99,6 +118,10 @@ Outcome RunWith(int mode, int stopAt = -1, int throwInFill = -1, int throwInCons
     if (layer.Index == throwInConsume)
     {
       throw std::runtime_error("consume failed");
+    }
+    if (mode == 2)
+    {
+      std::this_thread::sleep_for(std::chrono::milliseconds(2));
     }
     o.Order.push_back(layer.Index);
     vtkIdType ones = 0;
@@ -133,10 +156,11 @@ int main()
   }
   Check(ones > 1000, "the reference has samples: " + Str(ones));
 
-  for (const int threads : { 0, 1, 2 })
+  const char* const modes[] = { "one thread", "two threads", "two threads, slow consumer",
+    "two threads, slow scan" };
+  for (const int threads : { 0, 1, 2, 3 })
   {
-    const std::string mode =
-      std::string(" (") + (threads == 0 ? "one thread" : threads == 1 ? "two threads" : "two threads, scan thread filling") + ")";
+    const std::string mode = std::string(" (") + modes[threads] + ")";
     for (const bool external : { false, true })
     {
       const Outcome o = RunWith(threads, -1, -1, -1, external);
@@ -152,6 +176,13 @@ int main()
       Check(o.DensitiesRight, "each layer comes with its densities and count" + mode);
       Check(o.Finished == ones && o.Counted == ones,
         "Finish gets the total: " + Str(o.Finished) + " of " + Str(ones) + mode);
+      Check(o.FillsInOrder && o.FilledByCaller + o.FilledElsewhere == NZ,
+        "every layer filled once, one at a time, in order" + mode);
+      // Where the time is spare: mostly on the scan thread with a slow
+      // consumer, mostly on the calling thread with a slow scan.
+      Check(threads < 2 || (threads == 2 ? o.FilledElsewhere > NZ / 2 : o.FilledByCaller > NZ / 2),
+        "the layers filled by the thread with time to spare: " + Str(o.FilledByCaller) +
+          " by the calling thread, " + Str(o.FilledElsewhere) + " by the scan thread" + mode);
     }
     {
       const Outcome o = RunWith(threads, 6);
