@@ -218,58 +218,7 @@ void vtkErrorDiffusionPointAssembler::Begin(
   this->Densities = this->NewOrRecycled<vtkFloatArray>("array Density", 1);
   this->Densities->SetName("Density");
 
-  // Every image array with one tuple per point gets a copy of the same kind,
-  // keeping the attribute roles; arrays are paired by position, so unnamed
-  // arrays are carried too.
-  this->Sources.clear();
-  this->Targets.clear();
-  this->SourceIndices.clear();
-  this->Skipped.clear();
-  vtkPointData* inPD = image->GetPointData();
-  const vtkIdType points = image->GetNumberOfPoints();
-  for (int a = 0; a < inPD->GetNumberOfArrays(); ++a)
-  {
-    vtkAbstractArray* source = inPD->GetAbstractArray(a);
-    if (!source || (source->GetName() && std::strcmp(source->GetName(), "Density") == 0))
-    {
-      continue;
-    }
-    if (source->GetNumberOfTuples() != points || source->GetNumberOfComponents() < 1)
-    {
-      this->Skipped.emplace_back(source->GetName() ? source->GetName() : "(unnamed)");
-      continue;
-    }
-    // A recycled array of the same kind, unless either carries component
-    // names or information (the copy could keep stale ones).
-    vtkSmartPointer<vtkAbstractArray> target;
-    if (source->GetName() && !source->HasAComponentName() && !source->HasInformation())
-    {
-      target = this->TakeRecycled(std::string("array ") + source->GetName(),
-        source->GetClassName(), source->GetNumberOfComponents());
-    }
-    if (!target || target->HasAComponentName() || target->HasInformation())
-    {
-      target = vtkSmartPointer<vtkAbstractArray>::Take(source->NewInstance());
-    }
-    target->SetName(source->GetName());
-    target->SetNumberOfComponents(source->GetNumberOfComponents());
-    target->CopyComponentNames(source);
-    if (source->HasInformation())
-    {
-      target->CopyInformation(source->GetInformation(), /*deep=*/1);
-    }
-    const int index = outPD->AddArray(target);
-    for (int role = 0; role < vtkDataSetAttributes::NUM_ATTRIBUTES; ++role)
-    {
-      if (inPD->GetAbstractAttribute(role) == source)
-      {
-        outPD->SetActiveAttribute(index, role);
-      }
-    }
-    this->Sources.push_back(source);
-    this->Targets.push_back(target);
-    this->SourceIndices.push_back(a);
-  }
+  this->AddTargets(image->GetPointData(), image->GetNumberOfPoints(), outPD);
 
   // Room for one point per voxel (up to 2^28) at once: memory is committed
   // only where it is written, so the untouched tail costs address space, not
@@ -452,6 +401,71 @@ vtkSmartPointer<vtkPoints> vtkErrorDiffusionPointAssembler::End()
   this->Coordinates = nullptr;
   this->Densities = nullptr;
   return points;
+}
+
+//------------------------------------------------------------------------------
+// Every image array with one tuple per point gets a copy of the same kind,
+// keeping the attribute roles; arrays are paired by position, so unnamed
+// arrays are carried too.
+void vtkErrorDiffusionPointAssembler::AddTargets(
+  vtkPointData* inPD, vtkIdType points, vtkPointData* outPD)
+{
+  this->Sources.clear();
+  this->Targets.clear();
+  this->SourceIndices.clear();
+  this->Skipped.clear();
+  for (int a = 0; a < inPD->GetNumberOfArrays(); ++a)
+  {
+    vtkAbstractArray* source = inPD->GetAbstractArray(a);
+    if (!source || (source->GetName() && std::strcmp(source->GetName(), "Density") == 0))
+    {
+      continue;
+    }
+    if (source->GetNumberOfTuples() != points || source->GetNumberOfComponents() < 1)
+    {
+      this->Skipped.emplace_back(source->GetName() ? source->GetName() : "(unnamed)");
+      continue;
+    }
+    vtkSmartPointer<vtkAbstractArray> target = this->TargetFor(source);
+    const int index = outPD->AddArray(target);
+    for (int role = 0; role < vtkDataSetAttributes::NUM_ATTRIBUTES; ++role)
+    {
+      if (inPD->GetAbstractAttribute(role) == source)
+      {
+        outPD->SetActiveAttribute(index, role);
+      }
+    }
+    this->Sources.push_back(source);
+    this->Targets.push_back(target);
+    this->SourceIndices.push_back(a);
+  }
+}
+
+//------------------------------------------------------------------------------
+// An empty array like `source` for its samples: a recycled one of the same
+// kind, unless either carries component names or information (the copy could
+// keep stale ones), or a new one.
+vtkSmartPointer<vtkAbstractArray> vtkErrorDiffusionPointAssembler::TargetFor(
+  vtkAbstractArray* source)
+{
+  vtkSmartPointer<vtkAbstractArray> target;
+  if (source->GetName() && !source->HasAComponentName() && !source->HasInformation())
+  {
+    target = this->TakeRecycled(std::string("array ") + source->GetName(),
+      source->GetClassName(), source->GetNumberOfComponents());
+  }
+  if (!target || target->HasAComponentName() || target->HasInformation())
+  {
+    target = vtkSmartPointer<vtkAbstractArray>::Take(source->NewInstance());
+  }
+  target->SetName(source->GetName());
+  target->SetNumberOfComponents(source->GetNumberOfComponents());
+  target->CopyComponentNames(source);
+  if (source->HasInformation())
+  {
+    target->CopyInformation(source->GetInformation(), /*deep=*/1);
+  }
+  return target;
 }
 
 //------------------------------------------------------------------------------

@@ -120,6 +120,8 @@ public:
   void Recycle(vtkPolyData* previous);
 
 private:
+  void AddTargets(vtkPointData* inPD, vtkIdType points, vtkPointData* outPD);
+  vtkSmartPointer<vtkAbstractArray> TargetFor(vtkAbstractArray* source);
   void Reserve(vtkIdType tuples);
   vtkIdType CompactLayer(const unsigned char* mask);
   void WriteCoordinates(int z, vtkIdType first);
