@@ -81,10 +81,6 @@ public:
     }
     /// The sum, rounded to a double.
     double Value() const;
-    bool operator==(const ExactSum& other) const
-    {
-      return this->Low == other.Low && this->High == other.High;
-    }
   };
 
   struct Bucket
