@@ -8,6 +8,7 @@
 #include "vtkDoubleArray.h"
 #include "vtkFloatArray.h"
 #include "vtkImageData.h"
+#include "vtkInformation.h"
 #include "vtkMatrix3x3.h"
 #include "vtkPointData.h"
 #include "vtkPoints.h"
@@ -388,6 +389,14 @@ vtkSmartPointer<vtkPoints> vtkErrorDiffusionPointAssembler::End()
   {
     Trim(target, this->Total);
   }
+  // Recycled arrays were written through pointers: their time stamps must
+  // say so (cached ranges, renderers' buffers).
+  this->Coordinates->Modified();
+  this->Densities->Modified();
+  for (vtkAbstractArray* target : this->Targets)
+  {
+    target->Modified();
+  }
   auto points = vtkSmartPointer<vtkPoints>::New();
   points->SetData(this->Coordinates);
   if (this->OutputPointData)
@@ -534,6 +543,10 @@ vtkSmartPointer<ArrayT> vtkErrorDiffusionPointAssembler::NewOrRecycled(
     fresh->SetNumberOfComponents(components);
     return fresh;
   }
+  if (array->HasInformation())
+  {
+    array->GetInformation()->Clear(); // cached ranges of the old values
+  }
   return array;
 }
 
@@ -551,6 +564,8 @@ vtkSmartPointer<vtkCellArray> vtkErrorDiffusionPointAssembler::MakeVertices(vtkI
     std::iota(connectivity->GetPointer(0), connectivity->GetPointer(0) + n, ValueT(0));
     offsets->Squeeze(); // a recycled array may be larger
     connectivity->Squeeze();
+    offsets->Modified();
+    connectivity->Modified();
     verts->SetData(offsets, connectivity);
   };
   if (n < VTK_TYPE_INT32_MAX)

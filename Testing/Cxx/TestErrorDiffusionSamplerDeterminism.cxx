@@ -14,6 +14,7 @@
 #include "vtkPoints.h"
 #include "vtkUnsignedShortArray.h"
 
+#include <algorithm>
 #include <cstdlib>
 #include <cstring>
 #include <iomanip>
@@ -145,6 +146,26 @@ int main()
       before->RemoveObservers(vtkCommand::DeleteEvent);
       densityBefore->RemoveObservers(vtkCommand::DeleteEvent);
     }
+    // The reused Density array's range follows its new values.
+    double before2[2];
+    sampler->GetOutput()->GetPointData()->GetArray("Density")->GetRange(before2);
+    sampler->SetDensityScale(0.5);
+    sampler->Update();
+    vtkDataArray* halved = sampler->GetOutput()->GetPointData()->GetArray("Density");
+    double range[2];
+    halved->GetRange(range);
+    double direct[2] = { 1e30, -1e30 };
+    for (vtkIdType i = 0; i < halved->GetNumberOfTuples(); ++i)
+    {
+      direct[0] = std::min(direct[0], halved->GetTuple1(i));
+      direct[1] = std::max(direct[1], halved->GetTuple1(i));
+    }
+    Check(range[0] == direct[0] && range[1] == direct[1] && range[1] < before2[1],
+      "a reused array's range is that of its new values: " + Str(range[0]) + " " + Str(range[1]) +
+        " (before " + Str(before2[1]) + ")");
+    sampler->SetDensityScale(1.0);
+    sampler->SetSeed(8);
+    sampler->Update();
     vtkNew<vtkPolyData> held;
     held->ShallowCopy(sampler->GetOutput());
     sampler->SetSeed(7);
