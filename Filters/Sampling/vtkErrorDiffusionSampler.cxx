@@ -1006,6 +1006,7 @@ int vtkErrorDiffusionSampler::RequestData(
   run.Running = false;
   run.Points = nullptr;
   run.Mask = nullptr;
+  run.Assembler.Recycle(nullptr); // what this run did not reuse
   request->Remove(continueKey);
   this->UpdateProgress(1.0);
   return 1;
