@@ -11,7 +11,8 @@
 // alone; the relaxation pass alone, on the kernel's samples; and the filter
 // with another process busy on every core ("busy").
 // Counters: voxels/s, and x_plain = the plain loop's time / this time (the
-// plain loop timed, fastest of 3, right before the case, under the same load).
+// plain loop timed, fastest of 3, right before the case and, for the filter,
+// right after it too, under the same load).
 // No thresholds.
 #include "vtkBlueNoiseRelaxation.h"
 #include "vtkErrorDiffusionKernel.h"
@@ -195,10 +196,13 @@ void BM_Filter(benchmark::State& state)
   const double g = static_cast<double>(state.range(1)) / 255.0;
   const bool floats = state.range(2) != 0;
   auto image = floats ? Cube<vtkFloatArray>(n, g) : Cube<vtkUnsignedCharArray>(n, state.range(1));
-  // Busy: the baseline runs under the same load.
+  // Busy: the baseline runs under the same load, before and after the
+  // filter (the faster of the two: the host's other guests come and go).
   Load load(state.range(3) != 0);
-  const double plain =
-    floats ? PlainSeconds<float>(image, g) : PlainSeconds<unsigned char>(image, g);
+  const auto plainSeconds = [&] {
+    return floats ? PlainSeconds<float>(image, g) : PlainSeconds<unsigned char>(image, g);
+  };
+  double plain = plainSeconds();
   vtkNew<vtkErrorDiffusionSampler> sampler;
   sampler->SetInputData(image);
   sampler->SetDensityMappingToIdentity(); // a constant cube has no scalar range
@@ -221,6 +225,7 @@ void BM_Filter(benchmark::State& state)
     best = std::min(best, std::chrono::duration<double>(Clock::now() - start).count());
     benchmark::DoNotOptimize(sampler->GetOutput()->GetNumberOfPoints());
   }
+  plain = std::min(plain, plainSeconds());
   state.counters["voxels/s"] = benchmark::Counter(
     static_cast<double>(n) * n * n, benchmark::Counter::kIsIterationInvariantRate);
   state.counters["x_plain"] = plain / best;
