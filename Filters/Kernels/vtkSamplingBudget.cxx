@@ -76,20 +76,6 @@ void vtkSamplingBudget::Reset()
 }
 
 //------------------------------------------------------------------------------
-// As Add, for |x| beyond the float range: values below 2^8 units, below 2^62
-// in 2^-54 units.
-void vtkSamplingBudget::AddBeyondFloat(double x, double n)
-{
-  const int i = BeyondFloatBucket(x);
-  Bucket& b = this->BucketAt(i);
-  b.Min = b.Count == 0.0 ? x : std::min(b.Min, x);
-  b.Max = b.Count == 0.0 ? x : std::max(b.Max, x);
-  b.Count += n;
-  const auto v = static_cast<std::int64_t>(x * PowerOfTwo(FixedPoint - UnitExponent(i)));
-  b.Sum.Add(v, static_cast<std::uint64_t>(n));
-}
-
-//------------------------------------------------------------------------------
 void vtkSamplingBudget::Merge(const vtkSamplingBudget& other)
 {
   other.ForEachUsed([this](int i, const Bucket& o) {

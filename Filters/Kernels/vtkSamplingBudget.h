@@ -137,17 +137,15 @@ public:
     }
     const std::uint32_t bits = FloatBits(x);
     const int field = static_cast<int>((bits >> 23) & 0xFFu); // float's exponent field
-    if (field == 0xFF)
-    {
-      this->AddBeyondFloat(x, n);
-      return;
-    }
-    Bucket& b = this->BucketAt(Key(bits));
+    const int i = field == 0xFF ? BeyondFloatBucket(x) : Key(bits);
+    const int unit = field == 0xFF ? UnitExponent(i) : std::max(field, 1) - 127;
+    Bucket& b = this->BucketAt(i);
     b.Min = b.Count == 0.0 ? x : std::min(b.Min, x);
     b.Max = b.Count == 0.0 ? x : std::max(b.Max, x);
     b.Count += n;
-    // |x| < 2 units: below 2^55 in 2^-54 units; scaling by a power of two is exact.
-    const auto v = static_cast<std::int64_t>(x * PowerOfTwo(FixedPoint + 127 - std::max(field, 1)));
+    // |x| < 2 units (2^8 beyond the float range): below 2^62 in 2^-54 units;
+    // scaling by a power of two is exact.
+    const auto v = static_cast<std::int64_t>(x * PowerOfTwo(FixedPoint - unit));
     if (n == 1.0)
     {
       b.Sum.Add(v);
@@ -276,7 +274,6 @@ private:
     const auto k = static_cast<std::uint32_t>(std::max(std::ilogb(x), 128) - 128);
     return Key((std::signbit(x) ? 0x80000000u : 0u) | ((0x7F81u + k / 8) << 16));
   }
-  void AddBeyondFloat(double x, double n);
   // A bucket's sum counts its values in units of 2^(UnitExponent - FixedPoint).
   static constexpr int FixedPoint = 54;
   // k of a bucket's values' 2^k (see UnitOf).

@@ -519,7 +519,8 @@ vtkSmartPointer<vtkAbstractArray> vtkErrorDiffusionPointAssembler::TakeRecycled(
 {
   for (auto it = this->Recycled.begin(); it != this->Recycled.end(); ++it)
   {
-    if (it->Role == role && std::strcmp(it->Array->GetClassName(), className) == 0 &&
+    if (it->Role == role &&
+      (!className || std::strcmp(it->Array->GetClassName(), className) == 0) &&
       it->Array->GetNumberOfComponents() == components)
     {
       vtkSmartPointer<vtkAbstractArray> array = it->Array;
@@ -535,13 +536,13 @@ template <typename ArrayT>
 vtkSmartPointer<ArrayT> vtkErrorDiffusionPointAssembler::NewOrRecycled(
   const std::string& role, int components)
 {
-  auto fresh = vtkSmartPointer<ArrayT>::New();
-  vtkSmartPointer<ArrayT> array =
-    ArrayT::SafeDownCast(this->TakeRecycled(role, fresh->GetClassName(), components));
+  // The filter's own arrays: of their class when of their role.
+  vtkSmartPointer<ArrayT> array = ArrayT::SafeDownCast(this->TakeRecycled(role, nullptr, components));
   if (!array)
   {
-    fresh->SetNumberOfComponents(components);
-    return fresh;
+    array = vtkSmartPointer<ArrayT>::New();
+    array->SetNumberOfComponents(components);
+    return array;
   }
   if (array->HasInformation())
   {

@@ -148,6 +148,7 @@ private:
     vtkSmartPointer<vtkAbstractArray> Array;
   };
   std::vector<Kept> Recycled;
+  // The kept array of a role, of class className (any when null).
   vtkSmartPointer<vtkAbstractArray> TakeRecycled(
     const std::string& role, const char* className, int components);
   template <typename ArrayT>
