@@ -46,14 +46,22 @@ std::string Describe(const std::exception_ptr& error)
 // A counter one thread advances and the other waits on. The waiter spins for
 // a few microseconds (a layer hand-over usually comes that soon), then sleeps;
 // the advancing side makes the wake-up call only when it sleeps.
+//
+// Value and Sleeping are sequentially consistent on purpose: the advancing
+// side stores Value then reads Sleeping, the waiter stores Sleeping then reads
+// Value. With a release store and an acquire load each side may read the
+// other's old value (a store can wait in the core's store buffer past a later
+// load, even on x86): the waiter then sleeps on a value that has changed and
+// the advancing side skips the wake-up, which hung a run whose last layer was
+// handed over that way.
 class LayerCounter
 {
 public:
-  int Get() const { return this->Value.load(std::memory_order_acquire); }
+  int Get() const { return this->Value.load(); }
 
   void Advance(int value)
   {
-    this->Value.store(value, std::memory_order_release);
+    this->Value.store(value);
     if (this->Sleeping.load())
     {
       std::lock_guard<std::mutex> lock(this->Mutex);

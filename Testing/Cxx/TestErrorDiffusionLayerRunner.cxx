@@ -6,12 +6,19 @@
 // the total; MaskStorage receives the masks. Threaded, the densities are
 // filled one layer at a time, in order, by whichever thread has time: the scan
 // thread when the consumer is slow, the calling thread when the scan is.
+// Many short threaded runs end without a lost wake-up (a watchdog fails the
+// test when one stops making progress: a hang, not a timeout of CTest).
 #include "BlueNoiseTestUtilities.h"
 #include "vtkErrorDiffusionKernel.h"
 #include "vtkErrorDiffusionLayerRunner.h"
 
+#include <algorithm>
 #include <atomic>
 #include <chrono>
+#include <condition_variable>
+#include <cstdio>
+#include <cstdlib>
+#include <mutex>
 #include <stdexcept>
 #include <thread>
 #include <vector>
@@ -144,6 +151,56 @@ Outcome RunWith(int mode, int stopAt = -1, int throwInFill = -1, int throwInCons
   o.Error = runner.GetError();
   return o;
 }
+
+// Short threaded runs hand a layer over every few microseconds, and the end of
+// each run is a hand-over nothing follows: a wake-up lost there hangs the run
+// (it did, about once in 10^4 runs on a loaded machine, with the counters'
+// release/acquire ordering). Returns the runs completed; the watchdog ends the
+// process when no layer is consumed for 30 s.
+int ShortRuns(int runs)
+{
+  std::atomic<long> consumed{ 0 };
+  std::mutex mutex;
+  std::condition_variable finished;
+  bool done = false;
+  std::thread watchdog([&] {
+    std::unique_lock<std::mutex> lock(mutex);
+    long last = -1;
+    while (!finished.wait_for(lock, std::chrono::seconds(30), [&] { return done; }))
+    {
+      if (consumed.load() == last)
+      {
+        std::printf("FAIL: a threaded run hung after %ld layers\n", last);
+        std::fflush(stdout);
+        std::_Exit(1);
+      }
+      last = consumed.load();
+    }
+  });
+  const int n = 16, layers = 6;
+  int completed = 0;
+  for (int r = 0; r < runs; ++r)
+  {
+    vtkErrorDiffusionKernel kernel;
+    kernel.SetSeed(r);
+    kernel.Begin(n, n);
+    vtkErrorDiffusionLayerRunner runner;
+    runner.SetThreaded(true);
+    runner.SetFill([&](int, float* out) { std::fill(out, out + n * n, 0.3f); });
+    runner.SetConsume([&](const vtkErrorDiffusionLayerRunner::Layer&) {
+      consumed.fetch_add(1);
+      return true;
+    });
+    completed += runner.Run(kernel, n, n, layers) ? 1 : 0;
+  }
+  {
+    std::lock_guard<std::mutex> lock(mutex);
+    done = true;
+  }
+  finished.notify_all();
+  watchdog.join();
+  return completed;
+}
 }
 
 int main()
@@ -207,5 +264,8 @@ int main()
     Check(!runner.Run(kernel, NX, NY, NZ) && !runner.GetError().empty(),
       "a runner without Fill and Consume says so");
   }
+  const int runs = 20000;
+  const int completed = ShortRuns(runs);
+  Check(completed == runs, Str(completed) + " of " + Str(runs) + " short threaded runs complete");
   return Summary("TestErrorDiffusionLayerRunner");
 }
