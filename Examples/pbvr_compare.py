@@ -17,7 +17,7 @@ method (the image error curve of the README).
 
 Run with pvbatch (or pvpython) under a display:
 
-    xvfb-run -a pvbatch Examples/pbvr_compare.py \\
+    xvfb-run -a -s "-screen 0 1280x1024x24 -noreset" pvbatch Examples/pbvr_compare.py \\
         --plugin build/lib/paraview-5.11/plugins/BlueNoiseSampling/BlueNoiseSampling.so \\
         [--volume ch2bet.nii.gz] [--counts 3e4 1e5 3e5] [--size 480] [--out pbvr_compare.png]
         [--curve pbvr_error_curve.png]

@@ -16,7 +16,7 @@ program=("$dir/bin/bluenoise-sample" "$@")
 if [ -z "${DISPLAY:-}" ] && command -v xvfb-run >/dev/null 2>&1; then
   # -a takes the first free display from -n on; a random start keeps two
   # concurrent runs from racing for the same display number.
-  exec xvfb-run -a -n $((100 + RANDOM % 800)) -s "-screen 0 1280x1024x24" "${program[@]}"
+  exec xvfb-run -a -n $((100 + RANDOM % 800)) -s "-screen 0 1280x1024x24 -noreset" "${program[@]}"
 fi
 # With a DISPLAY, or without xvfb-run (then the program explains what is missing
 # unless --no-pictures is given).

@@ -15,9 +15,9 @@ macro: Testing/Applications/PBVRMacroScript.py, which runs
 Examples/pbvr_gui_macro.py on the small brain as the active source and checks
 the pipeline it sets up.
 
-Under xvfb-run -a a display number can be taken by another job between the
-check and the start of Xvfb; the run is then repeated (up to 3 times), only
-for that failure. Exits 125 (skip) when pvbatch or the files are missing.
+A failure to reach the X server (Xvfb failing to start, a display number
+taken by another job between xvfb-run's check and the start of Xvfb) repeats
+the run (up to 3 times), only for that failure. Exits 125 (skip) when pvbatch or the files are missing.
 """
 import argparse
 import math
@@ -77,7 +77,9 @@ def main():
     os.makedirs(args.out, exist_ok=True)
     sys.path.insert(0, os.path.abspath(args.examples))
     from png_arrays import read_png
-    prefix = [args.xvfb_run, "-a", "-s", "-screen 0 1024x768x24"] if args.xvfb_run else []
+    # -noreset: a connection opened while the server resets (after its last
+    # client left) fails with "bad X server connection".
+    prefix = [args.xvfb_run, "-a", "-s", "-screen 0 1024x768x24 -noreset"] if args.xvfb_run else []
     here = os.path.dirname(os.path.abspath(__file__))
 
     if args.mode == "compare":

@@ -24,8 +24,10 @@ set(command "${PROGRAM}" "${INPUT}" --output "${OUTPUT}" --points "${POINTS}")
 if (XVFB_RUN)
   # -a picks a free display; starting from a random number keeps concurrent
   # xvfb-run invocations (ctest -j, other users) from racing for the same one.
+  # -noreset: a connection opened while the server resets (after its last
+  # client left) fails.
   string(RANDOM LENGTH 3 ALPHABET 123456789 server)
-  set(command "${XVFB_RUN}" -a -n ${server} -s "-screen 0 1280x1024x24" ${command})
+  set(command "${XVFB_RUN}" -a -n ${server} -s "-screen 0 1280x1024x24 -noreset" ${command})
 else ()
   set(pictures OFF)
   list(APPEND command --no-pictures)

@@ -78,7 +78,9 @@ def main():
     command = [args.paraview, "--dr", "--plugin-search-paths=" + args.plugin_dir,
                "--plugins=" + args.plugin_name, "--script=" + script, "--exit"]
     if args.xvfb_run:
-        command = [args.xvfb_run, "-a", "-s", "-screen 0 1280x1024x24"] + command
+        # -noreset: a connection opened while the server resets (after its
+        # last client left) fails.
+        command = [args.xvfb_run, "-a", "-s", "-screen 0 1280x1024x24 -noreset"] + command
     elif not os.environ.get("DISPLAY"):
         print("SKIP: no DISPLAY and no xvfb-run to start the ParaView GUI")
         sys.exit(SKIP)
