@@ -155,9 +155,9 @@ Outcome RunWith(int mode, int stopAt = -1, int throwInFill = -1, int throwInCons
 // Short threaded runs hand a layer over every few microseconds, and the end of
 // each run is a hand-over nothing follows: a wake-up lost there hangs the run
 // (it did, about once in 10^4 runs on a loaded machine, with the counters'
-// release/acquire ordering). Returns the runs completed; the watchdog ends the
-// process when no layer is consumed for 30 s.
-int ShortRuns(int runs)
+// release/acquire ordering). The watchdog ends the process when no layer is
+// consumed for 30 s.
+void CheckShortRuns(int runs)
 {
   std::atomic<long> consumed{ 0 };
   std::mutex mutex;
@@ -199,7 +199,7 @@ int ShortRuns(int runs)
   }
   finished.notify_all();
   watchdog.join();
-  return completed;
+  Check(completed == runs, Str(completed) + " of " + Str(runs) + " short threaded runs complete");
 }
 }
 
@@ -264,8 +264,6 @@ int main()
     Check(!runner.Run(kernel, NX, NY, NZ) && !runner.GetError().empty(),
       "a runner without Fill and Consume says so");
   }
-  const int runs = 20000;
-  const int completed = ShortRuns(runs);
-  Check(completed == runs, Str(completed) + " of " + Str(runs) + " short threaded runs complete");
+  CheckShortRuns(20000);
   return Summary("TestErrorDiffusionLayerRunner");
 }
