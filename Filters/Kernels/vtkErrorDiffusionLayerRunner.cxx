@@ -296,16 +296,25 @@ bool vtkErrorDiffusionLayerRunner::RunThreaded(vtkErrorDiffusionKernel& kernel)
 // state.Filling.
 bool vtkErrorDiffusionLayerRunner::FillUpTo(ThreadState& state, int target)
 {
-  for (target = std::min(target, state.ToFill); state.Next < target; ++state.Next)
+  for (target = std::min(target, state.ToFill); state.Next < target;)
   {
     if (!state.Consumed.WaitFor(state.Next - this->Slots + 1, state.Failed.Stop))
     {
       return false;
     }
-    this->Fill(state.Next, this->DensitySlot(state.Next));
-    state.Filled.Advance(state.Next + 1);
+    this->FillNext(state);
   }
   return true;
+}
+
+//------------------------------------------------------------------------------
+// Fills layer state.Next, whose slot is free, and says so. The caller holds
+// state.Filling.
+void vtkErrorDiffusionLayerRunner::FillNext(ThreadState& state)
+{
+  this->Fill(state.Next, this->DensitySlot(state.Next));
+  ++state.Next;
+  state.Filled.Advance(state.Next);
 }
 
 //------------------------------------------------------------------------------
@@ -319,9 +328,7 @@ bool vtkErrorDiffusionLayerRunner::FillOneAhead(ThreadState& state)
   {
     return false;
   }
-  this->Fill(state.Next, this->DensitySlot(state.Next));
-  ++state.Next;
-  state.Filled.Advance(state.Next);
+  this->FillNext(state);
   return true;
 }
 

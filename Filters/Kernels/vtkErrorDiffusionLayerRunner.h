@@ -101,6 +101,7 @@ private:
   struct ThreadState;
   bool FillUpTo(ThreadState& state, int target);
   bool FillOneAhead(ThreadState& state);
+  void FillNext(ThreadState& state);
   void ScanAll(vtkErrorDiffusionKernel& kernel, ThreadState& state);
   bool ConsumeAll(ThreadState& state);
   vtkIdType ScanLayer(vtkErrorDiffusionKernel& kernel, int k);

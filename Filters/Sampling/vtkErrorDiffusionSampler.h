@@ -314,7 +314,8 @@ public:
    * Run the error-diffusion scan on a worker thread while the calling thread
    * builds the output points from the layers already scanned, the densities
    * of the layers ahead mapped by whichever thread has time (the scan itself
-   * is sequential: each voxel depends on the one before). Used when vtkSMPTools runs more than one thread (with its
+   * is sequential: each voxel depends on the one before). Used when
+   * vtkSMPTools runs more than one thread (with its
    * Sequential backend, the default of Debian's VTK and ParaView, when
    * VTK_SMP_MAX_THREADS, or else the hardware, allows more than one) and the
    * volume has at least 32768 voxels and two layers; the output is identical
