@@ -99,7 +99,6 @@ void vtkBlueNoiseRelaxation::Begin(int nx, int ny, int firstZ, std::uint64_t see
   this->Seed = seed;
   this->Moves = 0;
   this->LastDensity = -1.0f;
-  this->Rows.clear(); // their word offsets are for one row length
   const size_t layer = static_cast<size_t>(this->NX) * this->NY;
   const size_t words = static_cast<size_t>(this->WordsPerRow) * (this->NY + 2 * PadRows);
   this->NoSamples.assign(words, 0);
@@ -187,7 +186,7 @@ void vtkBlueNoiseRelaxation::SetDensity(float g)
   // the radius can be found.
   const int cap = static_cast<int>(
     std::min(std::ceil(this->Limit), static_cast<double>((radius + 1) * (radius + 1))));
-  if (radius != this->Radius || cap != this->Cap || this->Rows.empty())
+  if (radius != this->Radius || cap != this->Cap || this->Shells.empty())
   {
     this->SetRows(radius, cap);
   }
@@ -200,61 +199,74 @@ void vtkBlueNoiseRelaxation::SetRows(int radius, int cap)
 {
   this->Radius = radius;
   this->Cap = cap;
-  this->Rows.clear();
-  for (int dz = -radius; dz <= radius; ++dz)
-  {
-    for (int dy = -radius; dy <= radius; ++dy)
+  const auto searched = [&](int dz, int dy) {
+    return std::abs(dz) <= radius && std::abs(dy) <= radius && dz * dz + dy * dy < cap;
+  };
+  const auto add = [](std::vector<RowRun>& runs, int dz, int dy) {
+    if (!runs.empty() && runs.back().DZ == dz && runs.back().High == dy - 1)
     {
-      if (dz * dz + dy * dy < cap)
-      {
-        this->Rows.push_back({ dz, dy, dz * dz + dy * dy, dy * this->WordsPerRow, dz * Span + dy });
-      }
+      ++runs.back().High;
     }
-  }
-  std::stable_sort(this->Rows.begin(), this->Rows.end(),
-    [](const RowOffset& a, const RowOffset& b) { return a.Squared < b.Squared; });
-  this->Shells.clear();
-  for (size_t k = 0; k < this->Rows.size(); ++k)
-  {
-    if (k + 1 == this->Rows.size() || this->Rows[k + 1].Squared != this->Rows[k].Squared)
+    else
     {
-      this->Shells.push_back({ this->Rows[k].Squared, k + 1 });
+      runs.push_back({ dz, dy, dy });
     }
-  }
-  // The rows a face neighbor's search reads that the sample's does not.
-  this->Around.clear();
+  };
+  std::vector<std::pair<int, int>> rows; // squared distance and cell of the searched rows
+  this->Loaded.clear();
   for (int dz = -radius - 1; dz <= radius + 1; ++dz)
   {
     for (int dy = -radius - 1; dy <= radius + 1; ++dy)
     {
-      auto searched = [&](int z, int y) {
-        return std::abs(z) <= radius && std::abs(y) <= radius && z * z + y * y < cap;
-      };
-      if (!searched(dz, dy) &&
-        (searched(dz - 1, dy) || searched(dz + 1, dy) || searched(dz, dy - 1) ||
-          searched(dz, dy + 1)))
+      if (searched(dz, dy))
       {
-        this->Around.push_back({ dz, dy, dz * dz + dy * dy, dy * this->WordsPerRow, dz * Span + dy });
+        rows.emplace_back(dz * dz + dy * dy, dz * Span + dy);
+      }
+      if (searched(dz, dy) || searched(dz - 1, dy) || searched(dz + 1, dy) ||
+        searched(dz, dy - 1) || searched(dz, dy + 1))
+      {
+        add(this->Loaded, dz, dy);
       }
     }
+  }
+  std::stable_sort(rows.begin(), rows.end(),
+    [](const std::pair<int, int>& a, const std::pair<int, int>& b) { return a.first < b.first; });
+  // The rows at one distance are one row turned by quarter turns about the
+  // center (the search is symmetric): four of each, but for the center's own
+  // row, repeated here so that every shell has four.
+  this->Shells.clear();
+  for (size_t k = 0; k < rows.size();)
+  {
+    const size_t n = rows[k].first == 0 ? 1 : 4;
+    Shell shell{ rows[k].first, {} };
+    for (size_t i = 0; i < 4; ++i)
+    {
+      shell.Cells[i] = rows[k + i % n].second;
+    }
+    this->Shells.push_back(shell);
+    k += n;
   }
 }
 
 //------------------------------------------------------------------------------
-// Copies `rows` around (x, y) of the layers in Layers into the window: bit k of
-// a row is voxel x - 32 + k (zero outside the volume).
-void vtkBlueNoiseRelaxation::Load(const std::vector<RowOffset>& rows, int x, int y)
+// Copies the `runs` of rows around (x, y) of the layers in Layers into the
+// window: bit k of a row is voxel x - 32 + k (zero outside the volume).
+void vtkBlueNoiseRelaxation::Load(const std::vector<RowRun>& runs, int x, int y)
 {
   const int start = x - 32; // from -32: the word before the first is zero
   const int shift = start & 63;
   const std::ptrdiff_t word = this->RowStart(y) + (start >> 6);
-  for (const RowOffset& row : rows)
+  const std::ptrdiff_t stride = this->WordsPerRow;
+  for (const RowRun& run : runs)
   {
-    const std::uint64_t* words = this->Layers[row.DZ + Reach] + word + row.Words;
-    // The second word's part in two shifts: one by 64 - shift would be
-    // undefined for shift = 0.
-    this->Window[Reach * Span + Reach + row.Cell] =
-      (words[0] >> shift) | ((words[1] << 1) << (63 - shift));
+    const std::uint64_t* words = this->Layers[run.DZ + Reach] + word + run.Low * stride;
+    std::uint64_t* cell = this->Window + (run.DZ + Reach) * Span + run.Low + Reach;
+    for (int n = run.High - run.Low; n >= 0; --n, words += stride, ++cell)
+    {
+      // The second word's part in two shifts: one by 64 - shift would be
+      // undefined for shift = 0.
+      *cell = (words[0] >> shift) | ((words[1] << 1) << (63 - shift));
+    }
   }
 }
 
@@ -262,10 +274,11 @@ void vtkBlueNoiseRelaxation::Load(const std::vector<RowOffset>& rows, int x, int
 // The squared distance from the voxel at offset (fx, fy, fz) of the window's
 // center to the nearest sample in the window within Radius along each axis,
 // or Cap when none is nearer; as soon as one at `enough` or nearer is found,
-// that one. Rows are visited nearest first, and no further once they cannot
-// hold anything nearer than the best so far. In a row, the nearest sample is
-// the nearer of the first set bits on either side of the voxel (a sentinel
-// bit at Radius + 1 stands for none).
+// that one. Shells of rows are visited nearest first, and no further once they
+// cannot hold anything nearer than the best so far. The four rows of a shell
+// are at the same distance: the nearest sample in any of them is the nearest
+// in their union, the nearer of its first set bits on either side of the
+// voxel (a sentinel bit at Radius + 1 stands for none).
 int vtkBlueNoiseRelaxation::Nearest(int fx, int fy, int fz, int enough) const
 {
   const int center = 32 + fx;
@@ -273,20 +286,17 @@ int vtkBlueNoiseRelaxation::Nearest(int fx, int fy, int fz, int enough) const
   const std::uint64_t left = std::uint64_t(1) << (62 - this->Radius);
   const std::uint64_t* window = this->Window + (fz + Reach) * Span + fy + Reach;
   int best = this->Cap;
-  size_t k = 0;
-  for (const Shell& shell : this->Shells) // the rows at one distance, without a test each
+  for (const Shell& shell : this->Shells)
   {
     if (shell.Squared >= best || best <= enough)
     {
       break;
     }
-    for (; k < shell.End; ++k)
-    {
-      const std::uint64_t bits = window[this->Rows[k].Cell];
-      const int dx = std::min(
-        __builtin_ctzll((bits >> center) | right), __builtin_clzll((bits << (63 - center)) | left));
-      best = std::min(best, dx * dx + shell.Squared);
-    }
+    const int* cell = shell.Cells;
+    const std::uint64_t bits = window[cell[0]] | window[cell[1]] | window[cell[2]] | window[cell[3]];
+    const int dx = std::min(
+      __builtin_ctzll((bits >> center) | right), __builtin_clzll((bits << (63 - center)) | left));
+    best = std::min(best, dx * dx + shell.Squared);
   }
   return best;
 }
@@ -340,14 +350,13 @@ inline unsigned vtkBlueNoiseRelaxation::CrowdedFaces(int reach) const
 void vtkBlueNoiseRelaxation::RelaxSample(int x, int y, int z, float g)
 {
   this->SetDensity(g);
-  this->Load(this->Rows, x, y);
+  this->Load(this->Loaded, x, y);
   this->Window[Reach * Span + Reach] &= ~(std::uint64_t(1) << 32); // not its own neighbor
   const int current = this->Nearest(0, 0, 0, -1);
   if (current >= this->Limit)
   {
     return;
   }
-  this->Load(this->Around, x, y);
   int order[6];
   FaceOrder(this->Seed, x, y, z, order);
   // Only to a voxel of nearly the same density: along a density gradient a

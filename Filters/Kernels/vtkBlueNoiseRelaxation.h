@@ -42,10 +42,11 @@
  * the densities, masks and move flags (6 bytes a voxel) of the MaximumRadius
  * + 3 layers not yet final, and the masks as bits of 32 layers.
  *
- * The searches: the rows of bits around a sample are copied into a window,
- * 64 voxels wide, once per sample, and the nearest sample in a row is found
- * from the bit counts on either side of the voxel, without a loop over the
- * row's samples.
+ * The searches: the rows of bits around a sample (those its search and its
+ * face neighbors' read) are copied into a window, 64 voxels wide, once per
+ * sample, and the nearest sample in a row is found from the bit counts on
+ * either side of the voxel, without a loop over the row's samples; the rows
+ * at one distance from the voxel's, four at a time, are searched as one.
  */
 #ifndef vtkBlueNoiseRelaxation_h
 #define vtkBlueNoiseRelaxation_h
@@ -116,18 +117,16 @@ private:
     std::vector<unsigned char> Mask;
     std::vector<unsigned char> Moved; // samples that moved here: they move no more
   };
-  struct RowOffset // a row of voxels (dz, dy) from the one searched around
+  struct RowRun // rows dy = Low ... High of layer dz from the one searched around
   {
     int DZ;
-    int DY;
-    int Squared; // dz^2 + dy^2
-    int Words;   // dy rows of words
-    int Cell;    // dz * Span + dy: its place in the window from the center's
+    int Low;
+    int High;
   };
-  struct Shell // the rows at one distance, in Rows before End
+  struct Shell // four rows at one distance (dz^2 + dy^2 = Squared) from the center's
   {
     int Squared;
-    std::size_t End;
+    int Cells[4]; // their places in Window from the center's: dz Span + dy
   };
 
   Slot* Find(int z);
@@ -137,7 +136,7 @@ private:
   void Set(int x, int y, int z, bool sample);
   void SetDensity(float g);
   void SetRows(int radius, int cap);
-  void Load(const std::vector<RowOffset>& rows, int x, int y);
+  void Load(const std::vector<RowRun>& runs, int x, int y);
   int Nearest(int fx, int fy, int fz, int enough) const;
   unsigned BlockedFaces(int x, int y) const;
   unsigned CrowdedFaces(int reach) const;
@@ -161,9 +160,8 @@ private:
   double Limit = 0.0;         // the squared distance below which a sample moves
   int Radius = 1;             // of the box searched around a voxel
   int Cap = 1;                // distances are counted up to this one (squared)
-  std::vector<RowOffset> Rows;   // within Radius and nearer than Cap, nearest first
-  std::vector<RowOffset> Around; // the other rows a face neighbor's search reads
-  std::vector<Shell> Shells;      // of Rows
+  std::vector<RowRun> Loaded; // the rows the searches around a sample and its face neighbors read
+  std::vector<Shell> Shells;  // the rows within Radius and nearer than Cap, nearest first
   // The bits around the sample being relaxed: rows dz, dy in [-Reach, Reach]
   // (Reach = MaximumRadius + 1), each 64 voxels wide, the sample's x at bit 32.
   static constexpr int Reach = MaximumRadius + 1;
