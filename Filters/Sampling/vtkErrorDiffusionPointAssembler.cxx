@@ -20,11 +20,13 @@
 #include <cmath>
 #include <cstdlib>
 #include <cstring>
+#include <mutex>
 #include <new>
 #include <numeric>
+#include <unordered_map>
 
 #if defined(__linux__)
-#include <sys/mman.h> // madvise
+#include <sys/mman.h> // mmap, madvise
 #endif
 
 namespace
@@ -52,51 +54,128 @@ struct GatherWorker
   }
 };
 
+#if defined(__linux__) && defined(MADV_HUGEPAGE)
+// Large output arrays live in blocks of their own: mapped memory aligned to
+// 2 MB and advised for transparent huge pages (one page fault per 2 MB instead
+// of one per 4 kB: most of the cost of fresh memory is page faults). A block
+// keeps its capacity when its array is trimmed, so a re-execution that
+// recycles the array reuses the pages already there. (Memory from
+// posix_memalign, advised in part, could not be regrown in place: glibc's
+// realloc then copied the whole array into fresh pages.)
+constexpr size_t HugePage = size_t(2) << 20;
+
+struct Block
+{
+  void* Base;
+  size_t Length;   // of the mapping
+  size_t Capacity; // bytes from the data pointer
+};
+
+// Blocks by data pointer: a pointer not in here is not a block (its array may
+// have been reallocated by VTK since, and the address reused). Never
+// destroyed: an output array may be freed after the library's statics.
+struct BlockRegistry
+{
+  std::mutex Mutex;
+  std::unordered_map<void*, Block> Blocks;
+};
+BlockRegistry& Registry()
+{
+  static auto* registry = new BlockRegistry;
+  return *registry;
+}
+
+void* AllocateBlock(size_t bytes)
+{
+  const size_t capacity = (bytes + HugePage - 1) / HugePage * HugePage;
+  const size_t length = capacity + HugePage;
+  void* base = mmap(nullptr, length, PROT_READ | PROT_WRITE, MAP_PRIVATE | MAP_ANONYMOUS, -1, 0);
+  if (base == MAP_FAILED)
+  {
+    return nullptr;
+  }
+  const auto address = reinterpret_cast<std::uintptr_t>(base);
+  void* data = reinterpret_cast<void*>((address + HugePage - 1) / HugePage * HugePage);
+  madvise(data, capacity, MADV_HUGEPAGE); // a hint: failure is harmless
+  BlockRegistry& registry = Registry();
+  std::lock_guard<std::mutex> lock(registry.Mutex);
+  registry.Blocks[data] = { base, length, capacity };
+  return data;
+}
+
+void FreeBlock(void* data)
+{
+  Block block{};
+  {
+    BlockRegistry& registry = Registry();
+    std::lock_guard<std::mutex> lock(registry.Mutex);
+    const auto it = registry.Blocks.find(data);
+    if (it == registry.Blocks.end())
+    {
+      return;
+    }
+    block = it->second;
+    registry.Blocks.erase(it);
+  }
+  munmap(block.Base, block.Length);
+}
+
+size_t BlockCapacity(void* data)
+{
+  BlockRegistry& registry = Registry();
+  std::lock_guard<std::mutex> lock(registry.Mutex);
+  const auto it = registry.Blocks.find(data);
+  return it == registry.Blocks.end() ? 0 : it->second.Capacity;
+}
+
+// The array's values are `values` values of its block (no copy).
+void SetBlock(vtkAbstractArray* array, void* data, vtkIdType values)
+{
+  array->SetVoidArray(data, values, /*save=*/0, vtkAbstractArray::VTK_DATA_ARRAY_USER_DEFINED);
+  array->SetArrayFreeFunction(FreeBlock);
+}
+
+// A block for arrays of 8 MB and more with VTK's standard memory layout.
+bool WantsBlock(vtkAbstractArray* array, size_t bytes)
+{
+  return bytes >= 4 * HugePage && array->GetDataTypeSize() > 0 &&
+    array->HasStandardMemoryLayout() && vtkDataArray::SafeDownCast(array);
+}
+#endif
+
 // Room for up to `tuples` tuples, uninitialized (the array's count means
-// nothing until EnsureTuples sets it). Large numeric arrays get memory aligned
-// to 2 MB and advised for transparent huge pages (Linux): one page fault per
-// 2 MB instead of one per 4 kB. The room is a hint: where the address space
-// for all of it cannot be had, a quarter of it is tried, and so on, and
-// EnsureTuples grows the array later.
+// nothing until EnsureTuples sets it). A recycled array keeps its block when
+// that is large enough. The room is a hint: where the address space for all
+// of it cannot be had, a quarter of it is tried, and so on, and EnsureTuples
+// grows the array later.
 void ReserveUninitialized(vtkAbstractArray* array, vtkIdType tuples)
 {
   const int components = std::max(1, array->GetNumberOfComponents());
   const int valueSize = array->GetDataTypeSize();
-  if (array->GetSize() > 0) // a recycled array: grown in place (realloc), its pages kept
-  {
-    if (array->GetSize() / components < tuples)
-    {
-      try
-      {
-        array->Resize(tuples);
-      }
-      catch (const std::bad_alloc&)
-      {
-        // EnsureTuples grows the array later.
-      }
-    }
-    return;
-  }
   for (; tuples > 0; tuples /= 4)
   {
-    const size_t bytes = static_cast<size_t>(tuples) * components * valueSize;
+    const vtkIdType values = tuples * components;
+    const size_t bytes = static_cast<size_t>(values) * valueSize;
 #if defined(__linux__) && defined(MADV_HUGEPAGE)
-    constexpr size_t huge = size_t(2) << 20;
-    if (bytes >= 4 * huge && valueSize > 0 && array->HasStandardMemoryLayout() &&
-      vtkDataArray::SafeDownCast(array))
+    if (WantsBlock(array, bytes))
     {
-      const size_t rounded = (bytes + huge - 1) / huge * huge;
-      void* memory = nullptr;
-      if (posix_memalign(&memory, huge, rounded) != 0)
+      void* data = array->GetSize() > 0 ? array->GetVoidPointer(0) : nullptr;
+      if (!data || BlockCapacity(data) < bytes)
+      {
+        data = AllocateBlock(bytes);
+      }
+      if (!data)
       {
         continue;
       }
-      madvise(memory, rounded, MADV_HUGEPAGE); // a hint: failure is harmless
-      array->SetVoidArray(memory, static_cast<vtkIdType>(rounded / valueSize), /*save=*/0,
-        vtkAbstractArray::VTK_DATA_ARRAY_FREE);
+      SetBlock(array, data, static_cast<vtkIdType>(BlockCapacity(data) / valueSize));
       return;
     }
 #endif
+    if (array->GetSize() >= values)
+    {
+      return; // a recycled array
+    }
     try
     {
       if (array->Resize(tuples))
@@ -125,8 +204,26 @@ void EnsureTuples(vtkAbstractArray* array, vtkIdType tuples)
   array->SetNumberOfTuples(tuples);
 }
 
+// `tuples` tuples and no room beyond. A block keeps its capacity (for the
+// next run that recycles the array) but gives back the pages past the
+// values.
 void Trim(vtkAbstractArray* array, vtkIdType tuples)
 {
+  const int components = std::max(1, array->GetNumberOfComponents());
+#if defined(__linux__) && defined(MADV_HUGEPAGE)
+  void* data = array->GetSize() > 0 ? array->GetVoidPointer(0) : nullptr;
+  if (const size_t capacity = data ? BlockCapacity(data) : 0)
+  {
+    const size_t used = static_cast<size_t>(tuples) * components * array->GetDataTypeSize();
+    const size_t kept = (used + HugePage - 1) / HugePage * HugePage;
+    if (kept < capacity)
+    {
+      madvise(static_cast<char*>(data) + kept, capacity - kept, MADV_DONTNEED);
+    }
+    SetBlock(array, data, tuples * components);
+    return;
+  }
+#endif
   array->SetNumberOfTuples(tuples);
   array->Squeeze();
 }
@@ -559,12 +656,12 @@ vtkSmartPointer<vtkCellArray> vtkErrorDiffusionPointAssembler::MakeVertices(vtkI
     using ValueT = typename std::remove_reference<decltype(*offsets->GetPointer(0))>::type;
     ReserveUninitialized(offsets, n + 1);
     ReserveUninitialized(connectivity, n);
-    offsets->SetNumberOfValues(n + 1);
-    connectivity->SetNumberOfValues(n);
+    offsets->SetNumberOfTuples(n + 1); // SetNumberOfValues would reallocate a larger array
+    connectivity->SetNumberOfTuples(n);
     std::iota(offsets->GetPointer(0), offsets->GetPointer(0) + n + 1, ValueT(0));
     std::iota(connectivity->GetPointer(0), connectivity->GetPointer(0) + n, ValueT(0));
-    offsets->Squeeze(); // a recycled array may be larger
-    connectivity->Squeeze();
+    Trim(offsets, n + 1); // a recycled array may be larger
+    Trim(connectivity, n);
     offsets->Modified();
     connectivity->Modified();
     verts->SetData(offsets, connectivity);

@@ -27,9 +27,12 @@
  *
  * Memory: the output arrays reserve one point per voxel of the sampled extent
  * (up to 2^28) up front, so they never grow by copying; only what is written
- * is committed (large arrays are 2 MB aligned and, on Linux, advised for
- * transparent huge pages: most of the cost of fresh memory is page faults),
- * and End() trims them to size.
+ * is committed, and End() trims them to size. On Linux, arrays of 8 MB and
+ * more live in mapped blocks of their own, 2 MB aligned and advised for
+ * transparent huge pages (most of the cost of fresh memory is page faults);
+ * a block keeps its capacity through End() (its pages past the points are
+ * given back), so the next run that recycles the array neither copies nor
+ * faults in what it had.
  *
  * Layers must come in z order, each once. The image and its arrays are only
  * read, so another thread may read them at the same time.
