@@ -18,6 +18,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
 #include <cstdlib>
 #include <cstring>
 #include <mutex>
@@ -209,8 +210,8 @@ void EnsureTuples(vtkAbstractArray* array, vtkIdType tuples)
 // values.
 void Trim(vtkAbstractArray* array, vtkIdType tuples)
 {
-  const int components = std::max(1, array->GetNumberOfComponents());
 #if defined(__linux__) && defined(MADV_HUGEPAGE)
+  const int components = std::max(1, array->GetNumberOfComponents());
   void* data = array->GetSize() > 0 ? array->GetVoidPointer(0) : nullptr;
   if (const size_t capacity = data ? BlockCapacity(data) : 0)
   {
