@@ -169,6 +169,12 @@ public:
   {
   public:
     FloatTally() : Entries(NumberOfBuckets) {}
+    /// Nothing counted, the memory kept.
+    void Reset()
+    {
+      std::fill(this->Entries.begin(), this->Entries.end(), Entry());
+      this->Infinities[0] = this->Infinities[1] = 0;
+    }
     /// Count x n times (callers count runs of equal values: volumes have them).
     void Add(float x, std::uint64_t n = 1)
     {

@@ -119,6 +119,8 @@ constexpr bool IsSmallInteger()
 
 struct StatisticsWorker
 {
+  vtkSamplingDensity::SpareTallies* Spares = nullptr;
+
   template <typename ArrayT>
   void operator()(ArrayT* array, vtkIdType begin, vtkIdType end, int component,
     const unsigned char* ghosts, vtkPiecewiseFunction* function, vtkSamplingBudget& out) const
@@ -180,11 +182,16 @@ struct StatisticsWorker
   void TallyFloats(ArrayT* array, vtkIdType begin, vtkIdType end, int component,
     const unsigned char* ghosts, vtkSamplingBudget& out) const
   {
-    vtkSMPThreadLocal<vtkSamplingBudget::FloatTally> local;
+    vtkSMPThreadLocal<vtkSamplingBudget::FloatTally*> local(nullptr);
     const auto all = vtk::DataArrayValueRange(array);
     const int nc = array->GetNumberOfComponents();
     vtkSMPTools::For(begin, end, 65536, [&](vtkIdType first, vtkIdType last) {
-      vtkSamplingBudget::FloatTally& tally = local.Local();
+      vtkSamplingBudget::FloatTally*& mine = local.Local();
+      if (!mine)
+      {
+        mine = this->Spares->Take().release();
+      }
+      vtkSamplingBudget::FloatTally& tally = *mine;
       // Runs of equal values (by their bits) counted at once.
       std::uint32_t run = 0;
       std::uint64_t length = 0;
@@ -206,9 +213,13 @@ struct StatisticsWorker
       }
       AddRun(tally, run, length);
     });
-    for (const auto& tally : local)
+    for (vtkSamplingBudget::FloatTally* tally : local)
     {
-      out.Merge(tally);
+      if (tally)
+      {
+        out.Merge(*tally);
+        this->Spares->Give(std::unique_ptr<vtkSamplingBudget::FloatTally>(tally));
+      }
     }
   }
 
@@ -449,10 +460,41 @@ void vtkSamplingDensity::CollectStatistics(vtkDataArray* array, vtkIdType begin,
     return;
   }
   StatisticsWorker worker;
+  worker.Spares = this->Spares.get();
   if (!vtkArrayDispatch::Dispatch::Execute(
         array, worker, begin, end, this->Component, ghosts, this->Function, statistics))
   {
     worker(array, begin, end, this->Component, ghosts, this->Function, statistics);
+  }
+}
+
+//------------------------------------------------------------------------------
+std::unique_ptr<vtkSamplingBudget::FloatTally> vtkSamplingDensity::SpareTallies::Take()
+{
+  std::unique_ptr<vtkSamplingBudget::FloatTally> tally;
+  {
+    std::lock_guard<std::mutex> lock(this->Mutex);
+    if (!this->Tallies.empty())
+    {
+      tally = std::move(this->Tallies.back());
+      this->Tallies.pop_back();
+    }
+  }
+  if (!tally)
+  {
+    return std::unique_ptr<vtkSamplingBudget::FloatTally>(new vtkSamplingBudget::FloatTally);
+  }
+  tally->Reset();
+  return tally;
+}
+
+//------------------------------------------------------------------------------
+void vtkSamplingDensity::SpareTallies::Give(std::unique_ptr<vtkSamplingBudget::FloatTally> tally)
+{
+  std::lock_guard<std::mutex> lock(this->Mutex);
+  if (this->Tallies.size() < 16) // more threads than that are rare: the rest go
+  {
+    this->Tallies.push_back(std::move(tally));
   }
 }
 

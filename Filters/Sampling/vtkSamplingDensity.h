@@ -32,6 +32,8 @@
 #include "vtkType.h"                   // for vtkIdType
 
 #include <cstdint>
+#include <memory> // for std::shared_ptr
+#include <mutex>  // for std::mutex
 #include <vector> // for std::vector
 
 class vtkDataArray;
@@ -117,8 +119,23 @@ public:
     std::vector<std::uint64_t> Counts; // per value, in the layer being filled (in lanes)
   };
 
+  /// Float tallies (1.5 MiB each) kept from one statistics pass to the next:
+  /// fresh ones would be faulted in, a page at a time, by every part of every
+  /// pass. Shared by copies; thread-safe.
+  class SpareTallies
+  {
+  public:
+    std::unique_ptr<vtkSamplingBudget::FloatTally> Take();
+    void Give(std::unique_ptr<vtkSamplingBudget::FloatTally> tally);
+
+  private:
+    std::mutex Mutex;
+    std::vector<std::unique_ptr<vtkSamplingBudget::FloatTally>> Tallies;
+  };
+
 private:
   mutable ValueTable Table;
+  std::shared_ptr<SpareTallies> Spares = std::make_shared<SpareTallies>();
 };
 
 #endif
