@@ -381,9 +381,10 @@ void vtkErrorDiffusionPointAssembler::Reserve(vtkIdType tuples)
 }
 
 //------------------------------------------------------------------------------
-// The in-layer indices of the samples, row by row. Branch-free: near g = 0.5 a
-// branch per voxel would be mispredicted half of the time. One slot past the
-// samples is written.
+// The in-layer indices of the samples, row by row. Branch-free within eight
+// voxels (near g = 0.5 a branch per voxel would be mispredicted half of the
+// time); eight voxels without a sample are passed over at once (most of them
+// at low densities). One slot past the samples is written.
 vtkIdType vtkErrorDiffusionPointAssembler::CompactLayer(const unsigned char* mask)
 {
   const vtkIdType nx = this->Extent[1] - this->Extent[0] + 1;
@@ -393,7 +394,22 @@ vtkIdType vtkErrorDiffusionPointAssembler::CompactLayer(const unsigned char* mas
   {
     const vtkIdType rowStart = static_cast<vtkIdType>(j) * nx;
     const unsigned char* bits = mask + rowStart;
-    for (vtkIdType i = 0; i < nx; ++i)
+    vtkIdType i = 0;
+    for (; i + 8 <= nx; i += 8)
+    {
+      std::uint64_t eight;
+      std::memcpy(&eight, bits + i, sizeof(eight));
+      if (eight == 0)
+      {
+        continue;
+      }
+      for (vtkIdType k = i; k < i + 8; ++k)
+      {
+        ids[n] = rowStart + k;
+        n += bits[k];
+      }
+    }
+    for (; i < nx; ++i)
     {
       ids[n] = rowStart + i;
       n += bits[i];
