@@ -15,6 +15,17 @@ namespace
 const int PhaseU[4][2] = { { 1, 0 }, { 0, 1 }, { -1, 0 }, { 0, -1 } };
 const int PhaseV[4][2] = { { 0, 1 }, { -1, 0 }, { 0, -1 }, { 1, 0 } };
 
+// The row stride of the error buffers: nx rounded up to whole 64-byte lines
+// and then to an odd number of them. A scan along y steps by the stride, and
+// with a power-of-two stride (nx = 512: 2 kB) its voxels fall into a few
+// cache sets and evict each other before the next row reuses them.
+vtkIdType ErrorPitch(int nx)
+{
+  constexpr vtkIdType line = 64 / sizeof(float);
+  const vtkIdType lines = (nx + line - 1) / line;
+  return (lines % 2 == 0 ? lines + 1 : lines) * line;
+}
+
 int PositiveModulo4(int i)
 {
   return ((i % 4) + 4) % 4;
@@ -109,6 +120,13 @@ vtkErrorDiffusionKernel::~vtkErrorDiffusionKernel() = default;
 vtkErrorDiffusionKernel::LayerScan vtkErrorDiffusionKernel::GetLayerScan(
   int nx, int ny, int phase)
 {
+  return GetLayerScan(nx, ny, phase, nx);
+}
+
+//------------------------------------------------------------------------------
+vtkErrorDiffusionKernel::LayerScan vtkErrorDiffusionKernel::GetLayerScan(
+  int nx, int ny, int phase, vtkIdType pitch)
+{
   phase = PositiveModulo4(phase);
   LayerScan s;
   s.Phase = phase;
@@ -117,12 +135,12 @@ vtkErrorDiffusionKernel::LayerScan vtkErrorDiffusionKernel::GetLayerScan(
   const bool rowsAlongX = u[0] != 0;
   s.NU = rowsAlongX ? nx : ny;
   s.NV = rowsAlongX ? ny : nx;
-  s.UStride = rowsAlongX ? u[0] : static_cast<vtkIdType>(u[1]) * nx;
-  s.VStride = rowsAlongX ? static_cast<vtkIdType>(v[1]) * nx : v[0];
+  s.UStride = rowsAlongX ? u[0] : u[1] * pitch;
+  s.VStride = rowsAlongX ? v[1] * pitch : v[0];
   // The first voxel is the corner from which both u and v point inwards.
   const int x0 = (u[0] < 0 || v[0] < 0) ? nx - 1 : 0;
   const int y0 = (u[1] < 0 || v[1] < 0) ? ny - 1 : 0;
-  s.Start = x0 + static_cast<vtkIdType>(nx) * y0;
+  s.Start = x0 + pitch * y0;
   return s;
 }
 
@@ -153,7 +171,8 @@ void vtkErrorDiffusionKernel::Begin(int nx, int ny, int firstLayer)
   this->Carry = 0.0f;
   this->WarmedUp = false;
   this->TestedLayer = nullptr;
-  const size_t layer = static_cast<size_t>(this->NX) * static_cast<size_t>(this->NY);
+  this->Pitch = ErrorPitch(this->NX);
+  const size_t layer = static_cast<size_t>(this->Pitch) * static_cast<size_t>(this->NY);
   this->Current.assign(layer, 0.0f);
   this->Next.assign(layer, 0.0f);
   // The table or the scale may have changed since the last run.
@@ -222,7 +241,7 @@ void vtkErrorDiffusionKernel::WarmUp(const float* density, int layers)
   }
   this->WarmedUp = true;
   const int cycles = (layers + 3) / 4;
-  std::vector<unsigned char> discarded(this->Current.size());
+  std::vector<unsigned char> discarded(static_cast<size_t>(this->NX) * this->NY);
   const int first = this->FirstLayer + this->LayersDone - 4 * cycles;
   for (int w = 0; w < 4 * cycles; ++w)
   {
@@ -238,16 +257,26 @@ void vtkErrorDiffusionKernel::CenterCarriedError(const float* density)
 {
   double sum = this->Carry;
   size_t active = 0;
-  for (size_t i = 0; i < this->Current.size(); ++i)
+  for (int y = 0; y < this->NY; ++y)
   {
-    sum += this->Current[i];
-    active += Active(density[i]) ? 1 : 0;
+    const float* g = density + static_cast<size_t>(this->NX) * y;
+    const float* e = this->Current.data() + static_cast<size_t>(this->Pitch) * y;
+    for (int x = 0; x < this->NX; ++x)
+    {
+      sum += e[x];
+      active += Active(g[x]) ? 1 : 0;
+    }
   }
   this->Carry = 0.0f;
   const float shift = active > 0 ? static_cast<float>(sum / static_cast<double>(active)) : 0.0f;
-  for (size_t i = 0; i < this->Current.size(); ++i)
+  for (int y = 0; y < this->NY; ++y)
   {
-    this->Current[i] = Active(density[i]) ? this->Current[i] - shift : 0.0f;
+    const float* g = density + static_cast<size_t>(this->NX) * y;
+    float* e = this->Current.data() + static_cast<size_t>(this->Pitch) * y;
+    for (int x = 0; x < this->NX; ++x)
+    {
+      e[x] = Active(g[x]) ? e[x] - shift : 0.0f;
+    }
   }
 }
 
@@ -318,7 +347,7 @@ double vtkErrorDiffusionKernel::MeasureReceivedError(const vtkErrorDiffusionPara
       {
         for (int x = margin; x < n - margin; ++x)
         {
-          sum += probe.Current[x + static_cast<size_t>(n) * y];
+          sum += probe.Current[x + static_cast<size_t>(probe.Pitch) * y];
           ++count;
         }
       }
@@ -563,10 +592,12 @@ vtkIdType vtkErrorDiffusionKernel::ScanLayer(
     interior = this->Interior.data();
   }
   const LayerScan s = GetLayerScan(this->NX, this->NY, layer);
+  const LayerScan es = GetLayerScan(this->NX, this->NY, layer, this->Pitch);
   this->SeedLayer(layer);
   float* cur = this->Current.data();
   float* nxt = this->Next.data();
   const vtkIdType V = s.VStride;
+  const vtkIdType EV = es.VStride;
 
   // The share for the next voxel of the scan stays in a register: it is the
   // only dependency from one voxel to the next. It also carries, to the next
@@ -583,10 +614,12 @@ vtkIdType vtkErrorDiffusionKernel::ScanLayer(
     const bool oddRow = (q & 1) != 0;
     const vtkIdType d = oddRow ? -s.UStride : s.UStride;
     vtkIdType idx = s.Start + q * V + (oddRow ? (s.NU - 1) * s.UStride : 0);
+    const vtkIdType ed = oddRow ? -es.UStride : es.UStride;
+    vtkIdType eidx = es.Start + q * EV + (oddRow ? (es.NU - 1) * es.UStride : 0);
     const bool hasPrevRow = q > 0;
     const bool hasNextRow = q + 1 < s.NV;
     const bool fastRow = hasPrevRow && hasNextRow && allActive;
-    for (int p = 0; p < s.NU; ++p, idx += d)
+    for (int p = 0; p < s.NU; ++p, idx += d, eidx += ed)
     {
       const float g = density[idx];
       const bool hasPrevU = p > 0;
@@ -607,11 +640,11 @@ vtkIdType vtkErrorDiffusionKernel::ScanLayer(
         modulation = lp.Modulation;
         cachedG = g;
       }
-      // g + cur[idx] (+ the reservoir) is off the critical path.
-      const float value = (g + cur[idx] + reservoir.Received) + carry;
+      // g + cur[eidx] (+ the reservoir) is off the critical path.
+      const float value = (g + cur[eidx] + reservoir.Received) + carry;
       if (Record)
       {
-        cur[idx] = value - g;
+        cur[eidx] = value - g;
       }
       const float threshold = base + modulation * this->Random.Uniform();
       // Branch-free: near g = 0.5 a branch on the outcome is mispredicted
@@ -626,11 +659,11 @@ vtkIdType vtkErrorDiffusionKernel::ScanLayer(
         // value * w - b * w: the product does not wait for the comparison.
         const float taken = value >= threshold ? w[TARGET_U] : 0.0f;
         carry = value * w[TARGET_U] - taken;
-        cur[idx - d + V] += e * w[TARGET_BACK_V];
-        cur[idx + V] += e * w[TARGET_V];
-        nxt[idx - V] += e * w[TARGET_Z_BACKV];
-        nxt[idx - d] += e * w[TARGET_Z_BACKU];
-        nxt[idx] += e * w[TARGET_Z];
+        cur[eidx - ed + EV] += e * w[TARGET_BACK_V];
+        cur[eidx + EV] += e * w[TARGET_V];
+        nxt[eidx - EV] += e * w[TARGET_Z_BACKV];
+        nxt[eidx - ed] += e * w[TARGET_Z_BACKU];
+        nxt[eidx] += e * w[TARGET_Z];
         continue;
       }
       const bool valid[6] = { hasNextU && Active(density[idx + d]),
@@ -639,7 +672,7 @@ vtkIdType vtkErrorDiffusionKernel::ScanLayer(
         hasPrevRow && nextLayerExists && Active(next[idx - V]),
         hasPrevU && nextLayerExists && Active(next[idx - d]),
         nextLayerExists && Active(next[idx]) };
-      carry = this->SpreadAtFace(e, w, valid, idx, d, V, &reservoir);
+      carry = this->SpreadAtFace(e, w, valid, eidx, ed, EV, &reservoir);
     }
   }
   this->Carry = carry;

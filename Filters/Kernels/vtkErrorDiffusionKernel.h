@@ -215,6 +215,8 @@ private:
     bool Valid = false;
   };
   LevelParameters ParametersOf(float g);
+  // The scan in a layout whose rows are `pitch` values apart (the error buffers').
+  static LayerScan GetLayerScan(int nx, int ny, int phase, vtkIdType pitch);
   LevelParameters Evaluate(float g) const;
 
   // next: the densities of the following layer, nullptr if there is none.
@@ -244,6 +246,7 @@ private:
   // its sign, and never the charge curve, which is what is being calibrated.
   bool UseFixedCharge = false;
   float FixedCharge = 0.0f;
+  vtkIdType Pitch = 0;        // row stride of Current and Next (see ErrorPitch)
   std::vector<float> Current; // error accumulated for the layer being scanned
   std::vector<float> Next;    // error passed on to the following layer
   float Carry = 0.0f;         // the share in transit to the next voxel scanned
