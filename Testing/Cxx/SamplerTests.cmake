@@ -3,6 +3,7 @@
 bluenoise_add_test(TestErrorDiffusionParameterTable LABELS sampler)
 bluenoise_add_test(TestErrorDiffusionChargeCurve LABELS sampler threads)
 bluenoise_add_test(TestSamplingBudget LABELS sampler)
+bluenoise_add_test(TestSamplingDensity LABELS sampler)
 bluenoise_add_test(TestErrorDiffusionSamplerCounts LABELS sampler)
 bluenoise_add_test(TestBlueNoiseRelaxation LABELS sampler)
 bluenoise_add_test(TestBlueNoiseRelaxationRule LABELS sampler)

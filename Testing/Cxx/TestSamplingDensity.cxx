@@ -1,0 +1,136 @@
+// SPDX-FileCopyrightText: Copyright (c) 2025-2026 the BlueNoiseSampling contributors
+// SPDX-License-Identifier: BSD-3-Clause
+// vtkSamplingDensity::Fill against its class comment written the plain way:
+// g = clamp(s * (a x + b), 0, 1) with NaN to 0 and ghosts to 0, bit for bit
+// (a zero is +0), on float, double and integer arrays of one component (the
+// path that maps two values at a time), two components, and with ghosts;
+// values at the edges (NaN, infinities, signed zeros, just below and above
+// the clamps), any start and length (the tails of the pairs and fours), and
+// an infinite scale. The sum Fill returns is the sum of the densities.
+#include "BlueNoiseTestUtilities.h"
+#include "vtkSamplingDensity.h"
+
+#include "vtkDataSetAttributes.h"
+#include "vtkDoubleArray.h"
+#include "vtkFloatArray.h"
+#include "vtkIntArray.h"
+#include "vtkNew.h"
+#include "vtkShortArray.h"
+
+#include <cmath>
+#include <cstring>
+#include <limits>
+#include <vector>
+
+using namespace bluenoise_test;
+
+namespace
+{
+float Expected(double v, double a, double b, double scale)
+{
+  if (std::isnan(v))
+  {
+    return 0.0f;
+  }
+  const double g = scale * (a * v + b);
+  if (std::isnan(g) || g <= 0.0)
+  {
+    return 0.0f;
+  }
+  return g >= 1.0 ? 1.0f : static_cast<float>(g);
+}
+
+std::vector<double> EdgeValues()
+{
+  const double inf = std::numeric_limits<double>::infinity();
+  std::vector<double> values = { std::nan(""), -inf, inf, -0.0, 0.0, 1e-300, -1e-300, 0.25,
+    0.5, 0.999999999, 1.0, 1.000000001, 2.0, -3.0, 1e30, std::nextafter(1.0, 0.0), 3e-8 };
+  for (int k = 0; k < 40; ++k)
+  {
+    values.push_back(std::sin(0.7 * k) * 1.5); // both signs, inside and beyond [0, 1]
+  }
+  return values;
+}
+
+// Fill over every start and length up to 9 values from there, against
+// Expected; the array holds `values` in component `component` of `nc`.
+bool CheckFills(vtkDataArray* array, int component, const std::vector<double>& values,
+  const unsigned char* ghosts, double scale, const char* what)
+{
+  vtkSamplingDensity density;
+  density.SetMapping(vtkSamplingDensity::IDENTITY, component);
+  density.Finish(nullptr);
+  density.SetScale(scale);
+  const auto map = density.GetLinearMap();
+  bool ok = true;
+  const vtkIdType n = static_cast<vtkIdType>(values.size());
+  for (vtkIdType begin = 0; begin < n && ok; ++begin)
+  {
+    for (vtkIdType length = 0; length <= 9 && begin + length <= n && ok; ++length)
+    {
+      std::vector<float> out(static_cast<size_t>(length) + 1, -7.0f);
+      const double sum = density.Fill(array, begin, begin + length, ghosts, out.data());
+      double expectedSum = 0.0;
+      for (vtkIdType i = 0; i < length; ++i)
+      {
+        const bool ghost = ghosts && (ghosts[begin + i] & vtkDataSetAttributes::HIDDENPOINT);
+        const float e = ghost ? 0.0f : Expected(values[begin + i], map.A, map.B, scale);
+        ok = ok && std::memcmp(&e, &out[i], sizeof(float)) == 0;
+        expectedSum += e;
+      }
+      ok = ok && out[length] == -7.0f && std::abs(sum - expectedSum) <= 1e-12 * (1.0 + length);
+    }
+  }
+  return Check(ok, what);
+}
+
+template <typename ArrayT>
+vtkSmartPointer<ArrayT> Array(const std::vector<double>& values, int nc, int component)
+{
+  auto array = vtkSmartPointer<ArrayT>::New();
+  array->SetNumberOfComponents(nc);
+  array->SetNumberOfTuples(static_cast<vtkIdType>(values.size()));
+  for (size_t t = 0; t < values.size(); ++t)
+  {
+    for (int c = 0; c < nc; ++c)
+    {
+      array->SetComponent(static_cast<vtkIdType>(t), c, c == component ? values[t] : 0.9);
+    }
+  }
+  return array;
+}
+}
+
+int main()
+{
+  const std::vector<double> values = EdgeValues();
+  const double inf = std::numeric_limits<double>::infinity();
+  std::vector<double> asFloats; // the values as a float array holds them
+  for (double v : values)
+  {
+    asFloats.push_back(static_cast<float>(v));
+  }
+  CheckFills(Array<vtkFloatArray>(values, 1, 0), 0, asFloats, nullptr, 1.0, "float values");
+  CheckFills(Array<vtkFloatArray>(values, 1, 0), 0, asFloats, nullptr, 0.37, "float values, scaled");
+  CheckFills(Array<vtkFloatArray>(values, 1, 0), 0, asFloats, nullptr, inf, "an infinite scale");
+  CheckFills(Array<vtkDoubleArray>(values, 1, 0), 0, values, nullptr, 3.0, "double values");
+  CheckFills(Array<vtkDoubleArray>(values, 2, 1), 1, values, nullptr, 1.0, "two components");
+
+  std::vector<unsigned char> ghosts(values.size(), 0);
+  for (size_t i = 0; i < ghosts.size(); i += 3)
+  {
+    ghosts[i] = vtkDataSetAttributes::HIDDENPOINT;
+  }
+  CheckFills(Array<vtkFloatArray>(values, 1, 0), 0, asFloats, ghosts.data(), 1.0, "ghosts");
+
+  std::vector<double> ints; // 32-bit values: mapped one by one, as floats are
+  for (int k = 0; k < 30; ++k)
+  {
+    ints.push_back(static_cast<double>((k * 7919) % 601 - 300));
+  }
+  CheckFills(Array<vtkIntArray>(ints, 1, 0), 0, ints, nullptr, 1.0 / 250.0, "int values");
+
+  // 16-bit values in layers this small are mapped directly (no table).
+  CheckFills(Array<vtkShortArray>(ints, 1, 0), 0, ints, nullptr, 1.0 / 250.0, "short values");
+  return Summary("TestSamplingDensity");
+}
