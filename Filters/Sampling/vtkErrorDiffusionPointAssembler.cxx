@@ -25,9 +25,11 @@
 #include <new>
 #include <numeric>
 #include <unordered_map>
+#include <vector>
 
 #if defined(__linux__)
 #include <sys/mman.h> // mmap, madvise
+#include <unistd.h>   // sysconf
 #endif
 
 namespace
@@ -74,15 +76,26 @@ struct Block
 {
   void* Base;      // of the mapping, HugePage longer than the capacity (for the alignment)
   size_t Capacity; // bytes from the data pointer
+  size_t Used;     // bytes that may hold pages: the capacity, or up to the trimmed end
 };
 
 // Blocks by data pointer: a pointer not in here is not a block (its array may
 // have been reallocated by VTK since, and the address reused). Never
 // destroyed: an output array may be freed after the library's statics.
+//
+// Freed blocks are kept as spares, their pages lazily given back (MADV_FREE:
+// the kernel takes them when it needs memory, else they stay): ParaView
+// shallow-copies every output after its filter (vtkPVPostFilter), so a
+// re-execution cannot recycle the arrays of the last output, which are freed
+// just after it; the next execution then writes into pages already there
+// instead of faulting in and zeroing fresh ones (at 512^3 and g = 1/2 that
+// cost as much as the scan). At most MaximumSpareBytes() of pages are kept.
 struct BlockRegistry
 {
   std::mutex Mutex;
   std::unordered_map<void*, Block> Blocks;
+  std::vector<std::pair<void*, Block>> Spares; // oldest first
+  size_t SpareBytes = 0;                       // their Used bytes
 };
 BlockRegistry& Registry()
 {
@@ -90,9 +103,58 @@ BlockRegistry& Registry()
   return *registry;
 }
 
+// A quarter of the machine's memory, at most 4 GiB; none where pages cannot
+// be given back lazily.
+size_t MaximumSpareBytes()
+{
+#if defined(MADV_FREE)
+  static const size_t bytes = [] {
+    const long pages = sysconf(_SC_PHYS_PAGES);
+    const long size = sysconf(_SC_PAGESIZE);
+    const size_t memory = pages > 0 && size > 0 ? size_t(pages) * size_t(size) : 0;
+    return std::min(memory / 4, size_t(4) << 30);
+  }();
+  return bytes;
+#else
+  return 0;
+#endif
+}
+
+// A spare block of at least `bytes` (the smallest), registered again; null if none.
+void* TakeSpare(BlockRegistry& registry, size_t bytes, size_t& capacity)
+{
+  auto best = registry.Spares.end();
+  for (auto it = registry.Spares.begin(); it != registry.Spares.end(); ++it)
+  {
+    if (it->second.Capacity >= bytes &&
+      (best == registry.Spares.end() || it->second.Capacity < best->second.Capacity))
+    {
+      best = it;
+    }
+  }
+  if (best == registry.Spares.end())
+  {
+    return nullptr;
+  }
+  void* data = best->first;
+  capacity = best->second.Capacity;
+  registry.SpareBytes -= best->second.Used;
+  registry.Blocks[data] = { best->second.Base, capacity, capacity }; // Trim says what it used
+  registry.Spares.erase(best);
+  return data;
+}
+
 // A block of at least `bytes`; its capacity in `capacity`.
 void* AllocateBlock(size_t bytes, size_t& capacity)
 {
+  {
+    BlockRegistry& registry = Registry();
+    std::lock_guard<std::mutex> lock(registry.Mutex);
+    if (void* spare = TakeSpare(registry, bytes, capacity))
+    {
+      return spare;
+    }
+  }
   capacity = RoundUpToHugePage(bytes);
   void* base =
     mmap(nullptr, capacity + HugePage, PROT_READ | PROT_WRITE, MAP_PRIVATE | MAP_ANONYMOUS, -1, 0);
@@ -104,13 +166,20 @@ void* AllocateBlock(size_t bytes, size_t& capacity)
   madvise(data, capacity, MADV_HUGEPAGE); // a hint: failure is harmless
   BlockRegistry& registry = Registry();
   std::lock_guard<std::mutex> lock(registry.Mutex);
-  registry.Blocks[data] = { base, capacity };
+  registry.Blocks[data] = { base, capacity, capacity };
   return data;
 }
 
+void Unmap(const Block& block)
+{
+  munmap(block.Base, block.Capacity + HugePage);
+}
+
+// Keeps the block as a spare when it fits under MaximumSpareBytes() (the
+// oldest spares go first to make room), unmaps it otherwise.
 void FreeBlock(void* data)
 {
-  Block block{};
+  std::vector<Block> unmapped;
   {
     BlockRegistry& registry = Registry();
     std::lock_guard<std::mutex> lock(registry.Mutex);
@@ -119,10 +188,40 @@ void FreeBlock(void* data)
     {
       return;
     }
-    block = it->second;
+    const Block block = it->second;
     registry.Blocks.erase(it);
+    if (block.Used > MaximumSpareBytes())
+    {
+      unmapped.push_back(block);
+    }
+    else
+    {
+      while (registry.SpareBytes + block.Used > MaximumSpareBytes())
+      {
+        unmapped.push_back(registry.Spares.front().second);
+        registry.SpareBytes -= registry.Spares.front().second.Used;
+        registry.Spares.erase(registry.Spares.begin());
+      }
+#if defined(MADV_FREE)
+      madvise(data, block.Used, MADV_FREE);
+#endif
+      registry.Spares.emplace_back(data, block);
+      registry.SpareBytes += block.Used;
+    }
   }
-  munmap(block.Base, block.Capacity + HugePage);
+  std::for_each(unmapped.begin(), unmapped.end(), Unmap);
+}
+
+// Pages past `used` bytes of the block were given back.
+void SetBlockUsed(void* data, size_t used)
+{
+  BlockRegistry& registry = Registry();
+  std::lock_guard<std::mutex> lock(registry.Mutex);
+  const auto it = registry.Blocks.find(data);
+  if (it != registry.Blocks.end())
+  {
+    it->second.Used = used;
+  }
 }
 
 size_t BlockCapacity(void* data)
@@ -226,6 +325,7 @@ void Trim(vtkAbstractArray* array, vtkIdType tuples)
     {
       madvise(static_cast<char*>(data) + kept, capacity - kept, MADV_DONTNEED);
     }
+    SetBlockUsed(data, std::min(kept, capacity));
     SetBlock(array, data, tuples * components);
     return;
   }

@@ -3,7 +3,9 @@
 // Same seed: the same points bit for bit; another seed: other points; the scan
 // on a worker thread or not: the same output. Density g and 1 - g with the same
 // seed: complementary masks (the mirrored process). 16-bit values: the points
-// of the same values as floats.
+// of the same values as floats. A re-execution writes a large output into
+// the last output's memory, or, when a shallow copy held that output (as
+// ParaView's post filter does), into that memory once the copy lets it go.
 #include "SamplerTestUtilities.h"
 #include "vtkCallbackCommand.h"
 #include "vtkCommand.h"
@@ -15,12 +17,19 @@
 #include "vtkUnsignedShortArray.h"
 
 #include <algorithm>
+#include <cstdint>
 #include <cstdlib>
 #include <cstring>
 #include <iomanip>
 #include <random>
 #include <sstream>
 #include <string>
+#include <vector>
+
+#if defined(__linux__)
+#include <sys/mman.h> // mincore
+#include <unistd.h>   // sysconf
+#endif
 
 using namespace bluenoise_test;
 
@@ -68,6 +77,40 @@ vtkSmartPointer<vtkImageData> MaskOf(vtkImageData* image, int seed)
 // re-execution writes into the last output's block, a smaller output keeps
 // the block, a larger one after it is right again, and an array a downstream
 // user grows keeps its values.
+#if defined(__linux__) && defined(MADV_FREE)
+// Whether the pages of [data, data + bytes) are mapped.
+bool Mapped(const void* data, size_t bytes)
+{
+  const auto page = static_cast<std::uintptr_t>(sysconf(_SC_PAGESIZE));
+  const std::uintptr_t begin = reinterpret_cast<std::uintptr_t>(data) / page * page;
+  std::vector<unsigned char> resident(bytes / page + 2);
+  return mincore(reinterpret_cast<void*>(begin), bytes, resident.data()) == 0;
+}
+
+// ParaView keeps a shallow copy of every output until the filter after it
+// runs again (vtkPVPostFilter): a re-execution cannot write into the last
+// output, which is freed just after it. That memory should stay, for the
+// next execution to write into instead of faulting in fresh pages.
+void CheckHeldOutputReuse(vtkErrorDiffusionSampler* sampler, vtkPolyData* expected)
+{
+  vtkNew<vtkPolyData> postFilter;
+  postFilter->ShallowCopy(sampler->GetOutput());
+  const void* first = sampler->GetOutput()->GetPoints()->GetData()->GetVoidPointer(0);
+  const size_t bytes = static_cast<size_t>(expected->GetNumberOfPoints()) * 3 * sizeof(float);
+  sampler->Modified();
+  sampler->Update(); // the first output is held: fresh memory
+  postFilter->ShallowCopy(sampler->GetOutput()); // and now freed
+  Check(Mapped(first, bytes), "a freed output's memory stays mapped");
+  sampler->Modified();
+  sampler->Update();
+  Check(SamePoints(sampler->GetOutput(), expected) &&
+      sampler->GetOutput()->GetPoints()->GetData()->GetVoidPointer(0) == first,
+    "the execution after a held output writes into that output's memory once it is freed");
+}
+#else
+void CheckHeldOutputReuse(vtkErrorDiffusionSampler*, vtkPolyData*) {}
+#endif
+
 void CheckLargeOutputReuse()
 {
   const int n = 160; // about 2 M points at g = 1/2: 24 MB of coordinates
@@ -104,6 +147,7 @@ void CheckLargeOutputReuse()
   sampler->SetDensityScale(1.0);
   sampler->Update();
   Check(SamePoints(sampler->GetOutput(), full), "a larger output after it: the same points");
+  CheckHeldOutputReuse(sampler, full);
   vtkNew<vtkPolyData> held;
   held->ShallowCopy(sampler->GetOutput());
   vtkDataArray* density = held->GetPointData()->GetArray("Density");
