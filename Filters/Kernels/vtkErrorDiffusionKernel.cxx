@@ -532,7 +532,7 @@ bool vtkErrorDiffusionKernel::TestLayers(const float* density, const float* next
 // Interior = the 3x3 erosion of "active here and in the next layer", with
 // the outside of the layer inactive: byte loops the compiler vectorizes, in
 // memory order whatever the orientation of the scan.
-void vtkErrorDiffusionKernel::FindInterior(const float* density, const float* next)
+const unsigned char* vtkErrorDiffusionKernel::FindInterior(const float* density, const float* next)
 {
   const size_t nx = static_cast<size_t>(this->NX), ny = static_cast<size_t>(this->NY);
   const size_t layer = nx * ny;
@@ -540,7 +540,7 @@ void vtkErrorDiffusionKernel::FindInterior(const float* density, const float* ne
   this->InteriorWork.resize(layer);
   if (nx < 3 || ny < 3)
   {
-    return;
+    return this->Interior.data();
   }
   unsigned char* both = this->InteriorWork.data();
   for (size_t i = 0; i < layer; ++i)
@@ -566,6 +566,7 @@ void vtkErrorDiffusionKernel::FindInterior(const float* density, const float* ne
     eroded[i] = rows[i - nx] & rows[i] & rows[i + nx];
   }
   std::swap(this->Interior, this->InteriorWork);
+  return this->Interior.data();
 }
 
 //------------------------------------------------------------------------------
@@ -585,12 +586,7 @@ vtkIdType vtkErrorDiffusionKernel::ScanLayer(
   const bool allActive = this->TestLayers(density, next, reservoir.Remaining);
   // Where there are inactive voxels, the fast path still serves the voxels
   // whose neighborhood is active: the bulk of any real volume's support.
-  const unsigned char* interior = nullptr;
-  if (!allActive && next)
-  {
-    this->FindInterior(density, next);
-    interior = this->Interior.data();
-  }
+  const unsigned char* interior = allActive || !next ? nullptr : this->FindInterior(density, next);
   const LayerScan s = GetLayerScan(this->NX, this->NY, layer);
   const LayerScan es = GetLayerScan(this->NX, this->NY, layer, this->Pitch);
   this->SeedLayer(layer);
@@ -604,9 +600,7 @@ vtkIdType vtkErrorDiffusionKernel::ScanLayer(
   // active voxel of the scan, error that has no active target.
   float carry = this->Carry;
   float cachedG = -1.0f;
-  float w[6] = { 0, 0, 0, 0, 0, 0 };
-  float base = 0.5f;       // 0.5 - C(g) below g = 0.5, 0.5 + C(1 - g) above
-  float modulation = 0.0f; // s * m(g), negative above g = 0.5 (the mirrored process)
+  LevelParameters level; // of cachedG
   vtkIdType count = 0;
 
   for (int q = 0; q < s.NV; ++q)
@@ -634,19 +628,17 @@ vtkIdType vtkErrorDiffusionKernel::ScanLayer(
       }
       if (g != cachedG)
       {
-        const LevelParameters lp = this->ParametersOf(g);
-        std::copy(lp.Weights, lp.Weights + 6, w);
-        base = lp.Base;
-        modulation = lp.Modulation;
+        level = this->ParametersOf(g);
         cachedG = g;
       }
+      const float* w = level.Weights;
       // g + cur[eidx] (+ the reservoir) is off the critical path.
       const float value = (g + cur[eidx] + reservoir.Received) + carry;
       if (Record)
       {
         cur[eidx] = value - g;
       }
-      const float threshold = base + modulation * this->Random.Uniform();
+      const float threshold = level.Base + level.Modulation * this->Random.Uniform();
       // Branch-free: near g = 0.5 a branch on the outcome is mispredicted
       // half of the time.
       const unsigned char b = value >= threshold ? 1 : 0;

@@ -258,7 +258,7 @@ private:
   // active in the layer and the next (all six targets are then active).
   std::vector<unsigned char> Interior;
   std::vector<unsigned char> InteriorWork;
-  void FindInterior(const float* density, const float* next);
+  const unsigned char* FindInterior(const float* density, const float* next); // Interior
   const float* TestedLayer = nullptr; // the last successor layer tested, and whether
   bool TestedLayerActive = false;     // all of its voxels were active
 };
