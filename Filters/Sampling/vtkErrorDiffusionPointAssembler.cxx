@@ -212,16 +212,29 @@ void FreeBlock(void* data)
   std::for_each(unmapped.begin(), unmapped.end(), Unmap);
 }
 
-// Pages past `used` bytes of the block were given back.
-void SetBlockUsed(void* data, size_t used)
+// Gives back the block's pages past its first `used` bytes (rounded up to
+// huge pages) and returns its capacity; 0 when `data` is not a block.
+size_t TrimBlock(void* data, size_t used)
 {
-  BlockRegistry& registry = Registry();
-  std::lock_guard<std::mutex> lock(registry.Mutex);
-  const auto it = registry.Blocks.find(data);
-  if (it != registry.Blocks.end())
+  size_t capacity = 0;
+  size_t kept = 0;
   {
-    it->second.Used = used;
+    BlockRegistry& registry = Registry();
+    std::lock_guard<std::mutex> lock(registry.Mutex);
+    const auto it = registry.Blocks.find(data);
+    if (it == registry.Blocks.end())
+    {
+      return 0;
+    }
+    capacity = it->second.Capacity;
+    kept = std::min(RoundUpToHugePage(used), capacity);
+    it->second.Used = kept;
   }
+  if (kept < capacity)
+  {
+    madvise(static_cast<char*>(data) + kept, capacity - kept, MADV_DONTNEED);
+  }
+  return capacity;
 }
 
 size_t BlockCapacity(void* data)
@@ -317,15 +330,9 @@ void Trim(vtkAbstractArray* array, vtkIdType tuples)
 #if defined(__linux__) && defined(MADV_HUGEPAGE)
   const int components = std::max(1, array->GetNumberOfComponents());
   void* data = array->GetSize() > 0 ? array->GetVoidPointer(0) : nullptr;
-  if (const size_t capacity = data ? BlockCapacity(data) : 0)
+  const size_t used = static_cast<size_t>(tuples) * components * array->GetDataTypeSize();
+  if (data && TrimBlock(data, used) > 0)
   {
-    const size_t used = static_cast<size_t>(tuples) * components * array->GetDataTypeSize();
-    const size_t kept = RoundUpToHugePage(used);
-    if (kept < capacity)
-    {
-      madvise(static_cast<char*>(data) + kept, capacity - kept, MADV_DONTNEED);
-    }
-    SetBlockUsed(data, std::min(kept, capacity));
     SetBlock(array, data, tuples * components);
     return;
   }
