@@ -15,7 +15,10 @@ static_assert(RingSize >= 2 * vtkBlueNoiseRelaxation::MaximumRadius + 3, "ring t
 
 // The layers not yet final (the one being relaxed, the one below it and the
 // MaximumRadius above it) keep their densities and masks: these take 6 bytes a
-// voxel, 25 MiB a layer of 2048^2, against 1/8 byte for the bits.
+// voxel, 25 MiB a layer of 2048^2, against 1/8 byte for the bits. With one
+// more, what Push returns stays through the next Push (the header's promise):
+// Push(z) overwrites layer z - PlaneCount, which Push(z - 2) released at the
+// latest (it relaxed layer z - 2 - MaximumRadius).
 constexpr int PlaneCount = vtkBlueNoiseRelaxation::MaximumRadius + 3;
 
 // Zero rows above and below a layer's bits: a search reaches past the edges
@@ -559,7 +562,7 @@ const std::vector<vtkBlueNoiseRelaxation::Layer>& vtkBlueNoiseRelaxation::Push(
     // No layer before it waits, and no sample moves into or out of it: it is
     // final as it came (densities above 1/4, or none), without a copy.
     this->Relaxed = this->Finalized = z + 1;
-    this->Done.push_back({ z, density, mask, count });
+    this->Done.push_back({ z, density, mask, count, true });
     return this->Done;
   }
   Plane& plane = this->Planes[static_cast<size_t>(z - this->First) % PlaneCount];

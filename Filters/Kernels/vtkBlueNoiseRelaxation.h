@@ -38,7 +38,9 @@
  * returns the final layers, and Flush() the rest after the last one. A layer
  * with no density in (0, 1/4] is final once the layers before it are (no
  * sample moves into or out of it); pushed then, it is returned as it came,
- * its buffers the caller's. Memory:
+ * its buffers the caller's (Borrowed). The buffers of a layer that is not
+ * borrowed stay as they are through the next Push too, and are reused by the
+ * one after: a caller may hand them to another thread for a while. Memory:
  * the densities, masks and move flags (6 bytes a voxel) of the MaximumRadius
  * + 3 layers not yet final, and the masks as bits of 32 layers.
  *
@@ -68,6 +70,7 @@ public:
     const float* Density = nullptr;
     const unsigned char* Mask = nullptr;
     vtkIdType Count = 0;           ///< samples in the layer
+    bool Borrowed = false;         ///< the buffers given to Push: the caller's
   };
 
   static constexpr int MaximumRadius = 8;
@@ -93,7 +96,8 @@ public:
 
   /**
    * Add the next layer (global index z = the previous one + 1). Returns the
-   * layers that became final (valid until the next call of Push or Flush).
+   * layers that became final (the list valid until the next call of Push or
+   * Flush; the buffers of a layer not Borrowed until the call after that).
    */
   const std::vector<Layer>& Push(int z, const float* density, const unsigned char* mask);
 

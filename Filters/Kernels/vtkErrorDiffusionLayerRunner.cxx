@@ -298,13 +298,27 @@ bool vtkErrorDiffusionLayerRunner::FillUpTo(ThreadState& state, int target)
 {
   for (target = std::min(target, state.ToFill); state.Next < target;)
   {
-    if (!state.Consumed.WaitFor(state.Next - this->Slots + 1, state.Failed.Stop))
+    if (!this->WaitForSlot(state, state.Next))
     {
       return false;
     }
     this->FillNext(state);
   }
   return true;
+}
+
+//------------------------------------------------------------------------------
+// The scan thread: waits until the slot of layer k is free (its previous layer
+// consumed), doing the idle work it is given meanwhile; false when the run
+// stopped.
+bool vtkErrorDiffusionLayerRunner::WaitForSlot(ThreadState& state, int k)
+{
+  const int consumed = k - this->Slots + 1;
+  while (this->Idle && state.Consumed.Get() < consumed && !state.Failed.Stop.load() &&
+    this->Idle())
+  {
+  }
+  return state.Consumed.WaitFor(consumed, state.Failed.Stop);
 }
 
 //------------------------------------------------------------------------------

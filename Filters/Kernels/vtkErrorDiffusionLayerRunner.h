@@ -14,7 +14,10 @@
  * next layer is not scanned yet, the scan thread when the layer it needs is
  * not filled yet, so the filling goes to the side with time to spare (the
  * scan's, where consuming costs more, as the relaxation does; the calling
- * thread's otherwise). The calling thread is the one that consumes, so a
+ * thread's otherwise). Work the consumer leaves behind can go the same way:
+ * while the scan thread waits for the consumer to free a buffer, it calls
+ * Idle() (if set) until that returns false. The calling thread is the one
+ * that consumes, so a
  * consumer may report progress and check for abort the way a VTK filter must
  * (from the thread that called it).
  *
@@ -38,8 +41,9 @@
  * masks when threaded, 2 when not.
  *
  * Consume runs on the calling thread; Fill on either thread, one call at a
- * time, in layer order; MaskStorage, BeforeScan and Finish on the scan
- * thread, and must not touch what the others touch. An
+ * time, in layer order; MaskStorage, BeforeScan, Finish and Idle on the scan
+ * thread, and must not touch what the others touch (Idle, which runs while
+ * Consume does, synchronizes with it itself). An
  * exception thrown by any callback stops the run; Run then returns false and
  * GetError() says what was thrown.
  */
@@ -72,6 +76,7 @@ public:
   using ConsumeFunction = std::function<bool(const Layer& layer)>; ///< false stops the run
   using FinishFunction = std::function<void(vtkIdType samples)>;
   using BeforeScanFunction = std::function<void(int layer, const float* density)>;
+  using IdleFunction = std::function<bool()>; ///< false: nothing to do
 
   void SetFill(FillFunction f) { this->Fill = std::move(f); }
   void SetMaskStorage(MaskFunction f) { this->MaskStorage = std::move(f); }
@@ -79,6 +84,8 @@ public:
   void SetFinish(FinishFunction f) { this->Finish = std::move(f); }
   /// Called on the scan thread just before layer k is scanned (optional).
   void SetBeforeScan(BeforeScanFunction f) { this->BeforeScan = std::move(f); }
+  /// Work for the scan thread while the consumer is behind (optional; threaded runs only).
+  void SetIdle(IdleFunction f) { this->Idle = std::move(f); }
   void SetThreaded(bool threaded) { this->Threaded = threaded; }
   bool GetThreaded() const { return this->Threaded; }
 
@@ -100,6 +107,7 @@ private:
   bool RunThreaded(vtkErrorDiffusionKernel& kernel);
   struct ThreadState;
   bool FillUpTo(ThreadState& state, int target);
+  bool WaitForSlot(ThreadState& state, int k);
   bool FillOneAhead(ThreadState& state);
   void FillNext(ThreadState& state);
   void ScanAll(vtkErrorDiffusionKernel& kernel, ThreadState& state);
@@ -113,6 +121,7 @@ private:
   ConsumeFunction Consume;
   FinishFunction Finish;
   BeforeScanFunction BeforeScan;
+  IdleFunction Idle;
   bool Threaded = false;
   std::string Error;
 

@@ -5,6 +5,7 @@
 #include "vtkBlueNoiseRelaxation.h"
 #include "vtkCellArray.h"
 #include "vtkDoubleArray.h"
+#include "vtkErrorDiffusionLayerBacklog.h"
 #include "vtkErrorDiffusionLayerRunner.h"
 #include "vtkErrorDiffusionParameterTable.h"
 #include "vtkErrorDiffusionPointAssembler.h"
@@ -192,6 +193,7 @@ public:
   vtkErrorDiffusionKernel Kernel;
   vtkErrorDiffusionPointAssembler Assembler;
   vtkBlueNoiseRelaxation Relaxation;
+  vtkErrorDiffusionLayerBacklog Backlog; // the relaxation's final layers, to Emit
   vtkSmartPointer<vtkPolyData> Points;
   vtkSmartPointer<vtkUnsignedCharArray> Mask;
   std::vector<double> LayerSums; // expected points per sampled layer
@@ -659,6 +661,9 @@ bool vtkErrorDiffusionSampler::StartAssembly(vtkImageData* input)
   if (this->Method == METHOD_RELAXED_ERROR_DIFFUSION)
   {
     run.Relaxation.Begin(run.NX(), run.NY(), run.Sampled[4], static_cast<std::uint64_t>(this->Seed));
+    run.Backlog.SetEmit([this](const vtkBlueNoiseRelaxation::Layer& layer) {
+      this->Emit(layer.Z, layer.Density, layer.Mask, layer.Count);
+    });
   }
   run.AssemblerStarted = true;
   return true;
@@ -697,16 +702,12 @@ void vtkErrorDiffusionSampler::Receive(
     this->Emit(z, density, mask, count);
     return;
   }
-  for (const auto& layer : run.Relaxation.Push(z, density, mask))
-  {
-    this->Emit(layer.Z, layer.Density, layer.Mask, layer.Count);
-  }
+  run.Backlog.BeforePush();
+  run.Backlog.AfterPush(run.Relaxation.Push(z, density, mask));
   if (z == run.Sampled[5])
   {
-    for (const auto& layer : run.Relaxation.Flush())
-    {
-      this->Emit(layer.Z, layer.Density, layer.Mask, layer.Count);
-    }
+    run.Backlog.AfterPush(run.Relaxation.Flush());
+    run.Backlog.EmitAll();
   }
 }
 
@@ -750,6 +751,10 @@ bool vtkErrorDiffusionSampler::ScanSlab(vtkImageData* input, vtkDataArray* array
       return z < run.Sampled[4] ? nullptr : run.Mask->GetPointer((z - run.Sampled[4]) * layer);
     });
   }
+  if (this->Method == METHOD_RELAXED_ERROR_DIFFUSION)
+  {
+    runner.SetIdle([&run]() { return run.Backlog.EmitOne(); });
+  }
   const int progressStride = std::max(1, layers / 100);
   runner.SetConsume([&](const vtkErrorDiffusionLayerRunner::Layer& l) {
     this->Receive(step.First + l.Index, l.Density, l.Mask, l.Count);
@@ -762,12 +767,14 @@ bool vtkErrorDiffusionSampler::ScanSlab(vtkImageData* input, vtkDataArray* array
   });
   if (!runner.Run(run.Kernel, run.NX(), run.NY(), layers, step.Last < run.Sampled[5]))
   {
+    run.Backlog.Clear();
     if (!runner.GetError().empty())
     {
       vtkErrorMacro("Sampling failed: " << runner.GetError());
     }
     return false;
   }
+  run.Backlog.EmitAll(); // before the next step's input replaces this one
   return true;
 }
 

@@ -6,6 +6,8 @@
 // the total; MaskStorage receives the masks. Threaded, the densities are
 // filled one layer at a time, in order, by whichever thread has time: the scan
 // thread when the consumer is slow, the calling thread when the scan is.
+// Idle runs on the scan thread while it waits for a slow consumer, and is
+// called again as long as it had work.
 // Many short threaded runs end without a lost wake-up (a watchdog fails the
 // test when one stops making progress: a hang, not a timeout of CTest).
 #include "BlueNoiseTestUtilities.h"
@@ -87,6 +89,8 @@ struct Outcome
   bool FillsInOrder = true;  // one at a time, layer after layer
   int FilledByCaller = 0;    // layers filled on the calling thread
   int FilledElsewhere = 0;   // on the scan thread
+  int IdleCalls = 0;         // Idle, called on the scan thread while it waits
+  bool IdleOnScanThread = true;
 };
 
 // mode 0: one thread; 1: two threads; 2: two, the consumer slow; 3: two, the
@@ -147,6 +151,10 @@ Outcome RunWith(int mode, int stopAt = -1, int throwInFill = -1, int throwInCons
     return layer.Index != stopAt;
   });
   runner.SetFinish([&](vtkIdType total) { o.Finished = total; });
+  runner.SetIdle([&]() {
+    o.IdleOnScanThread = o.IdleOnScanThread && std::this_thread::get_id() != caller;
+    return ++o.IdleCalls % 2 == 1; // work, then none: called again, then no more
+  });
   o.Done = runner.Run(kernel, NX, NY, NZ);
   o.Error = runner.GetError();
   return o;
@@ -240,6 +248,10 @@ int main()
       Check(threads < 2 || (threads == 2 ? o.FilledElsewhere > NZ / 2 : o.FilledByCaller > NZ / 2),
         "the layers filled by the thread with time to spare: " + Str(o.FilledByCaller) +
           " by the calling thread, " + Str(o.FilledElsewhere) + " by the scan thread" + mode);
+      // Idle: on the scan thread, while it waits for the (slow) consumer.
+      Check(o.IdleOnScanThread && (threads > 0 || o.IdleCalls == 0) &&
+          (threads != 2 || o.IdleCalls >= 2),
+        "Idle called " + Str(o.IdleCalls) + " times, on the scan thread" + mode);
     }
     {
       const Outcome o = RunWith(threads, 6);

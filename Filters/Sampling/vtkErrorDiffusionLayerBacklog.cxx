@@ -1,0 +1,93 @@
+// SPDX-FileCopyrightText: Copyright (c) 2025-2026 the BlueNoiseSampling contributors
+// SPDX-License-Identifier: BSD-3-Clause
+#include "vtkErrorDiffusionLayerBacklog.h"
+
+#include <limits>
+
+//------------------------------------------------------------------------------
+void vtkErrorDiffusionLayerBacklog::SetEmit(EmitFunction emit)
+{
+  this->Clear();
+  this->Emit = std::move(emit);
+  this->Pushes = 0;
+}
+
+//------------------------------------------------------------------------------
+// The next Push is number Pushes + 1: it may overwrite what Push number
+// Pushes - 1 (and any before it) returned.
+void vtkErrorDiffusionLayerBacklog::BeforePush()
+{
+  this->EmitThrough(this->Pushes - 1);
+}
+
+//------------------------------------------------------------------------------
+void vtkErrorDiffusionLayerBacklog::AfterPush(const std::vector<Layer>& layers)
+{
+  ++this->Pushes;
+  for (const Layer& layer : layers)
+  {
+    if (layer.Borrowed)
+    {
+      this->EmitAll(); // what came before it first
+      std::lock_guard<std::mutex> emitting(this->Emitting);
+      this->Emit(layer);
+      continue;
+    }
+    std::lock_guard<std::mutex> lock(this->Queue);
+    this->Entries.push_back({ layer, this->Pushes });
+  }
+}
+
+//------------------------------------------------------------------------------
+bool vtkErrorDiffusionLayerBacklog::EmitOne()
+{
+  std::unique_lock<std::mutex> emitting(this->Emitting, std::try_to_lock);
+  Layer layer;
+  if (!emitting.owns_lock() || !this->Take(std::numeric_limits<long>::max(), layer))
+  {
+    return false;
+  }
+  this->Emit(layer);
+  return true;
+}
+
+//------------------------------------------------------------------------------
+void vtkErrorDiffusionLayerBacklog::EmitAll()
+{
+  this->EmitThrough(this->Pushes);
+}
+
+//------------------------------------------------------------------------------
+// Emits the layers of Push number `push` and before, after the one another
+// thread may be emitting (the lock also makes what that thread wrote visible
+// here).
+void vtkErrorDiffusionLayerBacklog::EmitThrough(long push)
+{
+  std::lock_guard<std::mutex> emitting(this->Emitting);
+  for (Layer layer; this->Take(push, layer);)
+  {
+    this->Emit(layer);
+  }
+}
+
+//------------------------------------------------------------------------------
+// The oldest layer queued, if Push number `push` or one before it returned it.
+bool vtkErrorDiffusionLayerBacklog::Take(long push, Layer& layer)
+{
+  std::lock_guard<std::mutex> lock(this->Queue);
+  if (this->Entries.empty() || this->Entries.front().Push > push)
+  {
+    return false;
+  }
+  layer = this->Entries.front().Final;
+  this->Entries.pop_front();
+  return true;
+}
+
+//------------------------------------------------------------------------------
+void vtkErrorDiffusionLayerBacklog::Clear()
+{
+  std::lock_guard<std::mutex> emitting(this->Emitting);
+  std::lock_guard<std::mutex> lock(this->Queue);
+  this->Entries.clear();
+}
