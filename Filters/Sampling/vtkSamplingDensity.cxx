@@ -96,6 +96,32 @@ constexpr int ValueOffset() // added to a value to index its count
   return std::is_signed<T>::value ? -static_cast<int>(std::numeric_limits<T>::min()) : 0;
 }
 
+// Adds 8-bit values [begin, end) to `table` eight at a time, the eight at
+// once where they are equal (backgrounds, flat regions); returns where it
+// stopped (fewer than eight before the end).
+template <typename T>
+vtkIdType CountBytes(const T* values, vtkIdType begin, vtkIdType end, std::uint64_t* table)
+{
+  static_assert(sizeof(T) == 1 && CountLanes<T>() == 4, "four tables of 8-bit values");
+  const auto index = [](T v) { return static_cast<size_t>(static_cast<int>(v) + ValueOffset<T>()); };
+  vtkIdType t = begin;
+  for (size_t lane = 0; t + 8 <= end; t += 8, lane = (lane + 1) & 3)
+  {
+    std::uint64_t word;
+    std::memcpy(&word, values + t, sizeof(word));
+    if (word == (word & 0xFF) * 0x0101010101010101ULL)
+    {
+      table[lane * Values<T>() + index(values[t])] += 8;
+      continue;
+    }
+    for (int k = 0; k < 8; ++k)
+    {
+      ++table[(k & 3) * Values<T>() + index(values[t + k])];
+    }
+  }
+  return t;
+}
+
 // Adds the values of one component over tuples [begin, end) to `table`
 // (CountLanes x Values counts), ghosts skipped.
 template <typename T, typename RangeT>
@@ -107,6 +133,13 @@ void CountComponent(const RangeT& all, int nc, int component, vtkIdType begin, v
     return static_cast<size_t>(static_cast<int>(all[t * nc + component]) + ValueOffset<T>());
   };
   vtkIdType t = begin;
+  if constexpr (sizeof(T) == 1 && std::is_pointer<decltype(all.begin())>::value)
+  {
+    if (!ghosts && nc == 1)
+    {
+      t = CountBytes<T>(all.begin(), begin, end, table);
+    }
+  }
   if (!ghosts)
   {
     for (; t + static_cast<vtkIdType>(lanes) <= end; t += lanes)

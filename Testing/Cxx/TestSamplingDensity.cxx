@@ -6,7 +6,10 @@
 // path that maps two values at a time), two components, and with ghosts;
 // values at the edges (NaN, infinities, signed zeros, just below and above
 // the clamps), any start and length (the tails of the pairs and fours), and
-// an infinite scale. The sum Fill returns is the sum of the densities.
+// an infinite scale. The sum Fill returns is the sum of the densities. 8-bit
+// values (a table of densities, the sum from counts per value, eight equal
+// values counted at once) in runs and not, and their statistics against the
+// same values in a 16-bit array.
 #include "BlueNoiseTestUtilities.h"
 #include "vtkSamplingDensity.h"
 
@@ -15,7 +18,10 @@
 #include "vtkFloatArray.h"
 #include "vtkIntArray.h"
 #include "vtkNew.h"
+#include "vtkSamplingBudget.h"
 #include "vtkShortArray.h"
+#include "vtkSignedCharArray.h"
+#include "vtkUnsignedCharArray.h"
 
 #include <cmath>
 #include <cstring>
@@ -55,7 +61,8 @@ std::vector<double> EdgeValues()
 // Fill over every start and length up to 9 values from there, against
 // Expected; the array holds `values` in component `component` of `nc`.
 bool CheckFills(vtkDataArray* array, int component, const std::vector<double>& values,
-  const unsigned char* ghosts, double scale, const char* what)
+  const unsigned char* ghosts, double scale, const char* what, vtkIdType maxLength = 9,
+  vtkIdType minLength = 0)
 {
   vtkSamplingDensity density;
   density.SetMapping(vtkSamplingDensity::IDENTITY, component);
@@ -66,7 +73,7 @@ bool CheckFills(vtkDataArray* array, int component, const std::vector<double>& v
   const vtkIdType n = static_cast<vtkIdType>(values.size());
   for (vtkIdType begin = 0; begin < n && ok; ++begin)
   {
-    for (vtkIdType length = 0; length <= 9 && begin + length <= n && ok; ++length)
+    for (vtkIdType length = minLength; length <= maxLength && begin + length <= n && ok; ++length)
     {
       std::vector<float> out(static_cast<size_t>(length) + 1, -7.0f);
       const double sum = density.Fill(array, begin, begin + length, ghosts, out.data());
@@ -98,6 +105,43 @@ vtkSmartPointer<ArrayT> Array(const std::vector<double>& values, int nc, int com
     }
   }
   return array;
+}
+
+// 8-bit values from `low` in runs of equal ones (counted eight at a time) and
+// not, `repeats` times.
+std::vector<double> ByteRuns(int low, int repeats = 1)
+{
+  std::vector<double> values;
+  const int runs[][2] = { { 9, 5 }, { 3, 200 }, { 17, 0 }, { 1, 7 }, { 8, 7 }, { 11, 255 } };
+  for (int r = 0; r < repeats; ++r)
+  {
+    for (const auto& run : runs)
+    {
+      values.insert(values.end(), static_cast<size_t>(run[0]), static_cast<double>(run[1] + low));
+    }
+    for (int k = 0; k < 20; ++k)
+    {
+      values.push_back(static_cast<double>((k * 37 + r) % 256 + low));
+    }
+  }
+  return values;
+}
+
+// The statistics of 8-bit values (counted eight at a time where equal) are
+// those of the same values in a 16-bit array (counted one by one).
+template <typename ByteArrayT>
+bool CheckByteStatistics(const std::vector<double>& values, const char* what)
+{
+  vtkSamplingDensity density;
+  density.SetMapping(vtkSamplingDensity::IDENTITY, 0);
+  vtkSamplingBudget bytes, shorts;
+  const auto n = static_cast<vtkIdType>(values.size());
+  for (vtkIdType begin = 0; begin < n; begin += 5)
+  {
+    density.CollectStatistics(Array<ByteArrayT>(values, 1, 0), begin, n, nullptr, bytes);
+    density.CollectStatistics(Array<vtkShortArray>(values, 1, 0), begin, n, nullptr, shorts);
+  }
+  return Check(bytes.Serialize() == shorts.Serialize(), what);
 }
 }
 
@@ -132,5 +176,23 @@ int main()
 
   // 16-bit values in layers this small are mapped directly (no table).
   CheckFills(Array<vtkShortArray>(ints, 1, 0), 0, ints, nullptr, 1.0 / 250.0, "short values");
+  // 8-bit values: mapped through a table of densities from 1024 values on,
+  // their sum from the counts per value, eight equal values counted at once.
+  const std::vector<double> bytes = ByteRuns(0, 16); // 1104 values
+  const vtkIdType longest = static_cast<vtkIdType>(bytes.size());
+  CheckFills(Array<vtkUnsignedCharArray>(bytes, 1, 0), 0, bytes, nullptr, 1.0 / 255.0,
+    "unsigned char values", longest, longest - 80);
+  const std::vector<double> signedBytes = ByteRuns(-128, 16);
+  CheckFills(Array<vtkSignedCharArray>(signedBytes, 1, 0), 0, signedBytes, nullptr, 1.0 / 100.0,
+    "signed char values", longest, longest - 80);
+  std::vector<unsigned char> byteGhosts(bytes.size(), 0);
+  for (size_t i = 0; i < byteGhosts.size(); i += 3)
+  {
+    byteGhosts[i] = vtkDataSetAttributes::HIDDENPOINT;
+  }
+  CheckFills(Array<vtkUnsignedCharArray>(bytes, 1, 0), 0, bytes, byteGhosts.data(), 1.0 / 255.0,
+    "unsigned char values with ghosts", longest, longest - 80);
+  CheckByteStatistics<vtkUnsignedCharArray>(ByteRuns(0), "unsigned char statistics");
+  CheckByteStatistics<vtkSignedCharArray>(ByteRuns(-128), "signed char statistics");
   return Summary("TestSamplingDensity");
 }
