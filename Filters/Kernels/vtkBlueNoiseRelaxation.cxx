@@ -167,7 +167,9 @@ inline void vtkBlueNoiseRelaxation::Set(int x, int y, int z, bool sample)
     const_cast<std::uint64_t*>(this->Row(slot->Bits.data(), y))[x >> 6];
   const std::uint64_t bit = std::uint64_t(1) << (x & 63);
   word = sample ? (word | bit) : (word & ~bit);
-  this->FindPlane(z)->Mask[x + static_cast<size_t>(this->NX) * y] = sample ? 1 : 0;
+  Plane* plane = this->FindPlane(z);
+  plane->Mask[x + static_cast<size_t>(this->NX) * y] = sample ? 1 : 0;
+  plane->Count += sample ? 1 : -1; // a move empties a sample's voxel and fills an empty one
 }
 
 //------------------------------------------------------------------------------
@@ -529,8 +531,7 @@ void vtkBlueNoiseRelaxation::Release(int z)
   layer.Z = z;
   layer.Density = plane->Density.data();
   layer.Mask = plane->Mask.data();
-  layer.Count = std::count_if(
-    plane->Mask.begin(), plane->Mask.end(), [](unsigned char m) { return m != 0; });
+  layer.Count = plane->Count;
   this->Done.push_back(layer);
   this->Finalized = z + 1;
 }
@@ -567,6 +568,7 @@ const std::vector<vtkBlueNoiseRelaxation::Layer>& vtkBlueNoiseRelaxation::Push(
   }
   Plane& plane = this->Planes[static_cast<size_t>(z - this->First) % PlaneCount];
   plane.Z = z;
+  plane.Count = count;
   std::copy(density, density + layer, plane.Density.begin());
   std::copy(mask, mask + layer, plane.Mask.begin());
   std::fill(plane.Moved.begin(), plane.Moved.end(), 0);

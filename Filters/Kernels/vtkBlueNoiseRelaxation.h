@@ -120,6 +120,7 @@ private:
     std::vector<float> Density;
     std::vector<unsigned char> Mask;
     std::vector<unsigned char> Moved; // samples that moved here: they move no more
+    vtkIdType Count = 0;              // samples in Mask
   };
   struct RowRun // rows dy = Low ... High of layer dz from the one searched around
   {

@@ -6,7 +6,8 @@
 // (within and beyond the move tolerance, above 1/4 and 0, and whole layers
 // where nothing moves), at several volume shapes (rows shorter and longer
 // than a word), pushed layer by layer:
-// the relaxed masks must be the same bit for bit, and the counts kept.
+// the relaxed masks must be the same bit for bit, and the counts kept (in
+// all, and in each layer returned).
 #include "BlueNoiseTestUtilities.h"
 #include "vtkBlueNoiseRelaxation.h"
 
@@ -192,12 +193,14 @@ int main()
       const auto count = std::count(v.Mask.begin(), v.Mask.end(), 1);
       const size_t layer = static_cast<size_t>(shape[0]) * shape[1];
       std::vector<unsigned char> relaxed(v.Mask.size(), 2);
+      bool countsRight = true; // each layer's Count, its samples after the moves
       R relaxation;
       relaxation.Begin(shape[0], shape[1], 0, seed);
       auto keep = [&](const std::vector<R::Layer>& layers) {
         for (const auto& l : layers)
         {
           std::copy(l.Mask, l.Mask + layer, relaxed.begin() + l.Z * layer);
+          countsRight = countsRight && l.Count == std::count(l.Mask, l.Mask + layer, 1);
         }
       };
       for (int z = 0; z < shape[2]; ++z)
@@ -210,6 +213,7 @@ int main()
         " seed " + Str(seed) + " (" + Str(relaxation.GetNumberOfMoves()) + " moves)";
       Check(relaxed == v.Mask, "the pass moves as its definition does: " + what);
       Check(std::count(relaxed.begin(), relaxed.end(), 1) == count, "the count is kept: " + what);
+      Check(countsRight, "each layer comes with its count: " + what);
     }
   }
   return Summary("TestBlueNoiseRelaxationRule");
