@@ -17,9 +17,8 @@
  * thread's otherwise). Work the consumer leaves behind can go the same way:
  * while the scan thread waits for the consumer to free a buffer, it calls
  * Idle() (if set) until that returns false. The calling thread is the one
- * that consumes, so a
- * consumer may report progress and check for abort the way a VTK filter must
- * (from the thread that called it).
+ * that consumes, so a consumer may report progress and check for abort the
+ * way a VTK filter must (from the thread that called it).
  *
  * Per layer k (0-based in the run) the runner asks Fill(k, density) for the
  * densities (the kernel also needs the next layer's, so Fill runs at least one

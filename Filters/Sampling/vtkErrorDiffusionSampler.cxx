@@ -671,7 +671,8 @@ bool vtkErrorDiffusionSampler::StartAssembly(vtkImageData* input)
 
 //------------------------------------------------------------------------------
 // A final layer of samples: into the points, and into the mask unless the
-// kernel wrote it there.
+// kernel wrote it there. From the calling thread, or from the scan thread for
+// a relaxed layer (the backlog emits one layer at a time, under its lock).
 void vtkErrorDiffusionSampler::Emit(
   int z, const float* density, const unsigned char* mask, vtkIdType count)
 {

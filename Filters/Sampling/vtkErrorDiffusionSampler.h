@@ -74,9 +74,10 @@
  * grow with the output.
  *
  * Time O(voxels); memory besides the input and the output a few layers. The
- * scan runs on a worker thread while this thread builds the points, the
- * densities mapped by whichever of the two has time (UseWorkerThread, when
- * more than one thread is allowed);
+ * scan runs on a worker thread while this thread relaxes and builds the
+ * points, the densities mapped and the relaxed layers' points built by
+ * whichever of the two has time (UseWorkerThread, when more than one thread
+ * is allowed);
  * the pass over the values that a point budget or an unset scalar range needs
  * before the scan runs on as many threads as are allowed. Progress is reported per layer; abort is honored between
  * layers and leaves an empty output.
@@ -312,9 +313,10 @@ public:
   ///@{
   /**
    * Run the error-diffusion scan on a worker thread while the calling thread
-   * builds the output points from the layers already scanned, the densities
-   * of the layers ahead mapped by whichever thread has time (the scan itself
-   * is sequential: each voxel depends on the one before). Used when
+   * relaxes and builds the output points from the layers already scanned,
+   * the densities of the layers ahead mapped and the points of relaxed layers
+   * built by whichever thread has time (the scan itself is sequential: each
+   * voxel depends on the one before). Used when
    * vtkSMPTools runs more than one thread (with its
    * Sequential backend, the default of Debian's VTK and ParaView, when
    * VTK_SMP_MAX_THREADS, or else the hardware, allows more than one) and the
