@@ -96,6 +96,35 @@ constexpr int ValueOffset() // added to a value to index its count
   return std::is_signed<T>::value ? -static_cast<int>(std::numeric_limits<T>::min()) : 0;
 }
 
+// How many of the floats from `begin` on (before `end`) have the bits `run`,
+// four at a time: stops at the first four that do not all have them.
+inline vtkIdType RunLength(const float* values, vtkIdType begin, vtkIdType end, std::uint32_t run)
+{
+  vtkIdType t = begin;
+#if defined(__SSE2__)
+  const __m128i same = _mm_set1_epi32(static_cast<int>(run));
+  for (; t + 4 <= end; t += 4)
+  {
+    const __m128i four = _mm_loadu_si128(reinterpret_cast<const __m128i*>(values + t));
+    if (_mm_movemask_epi8(_mm_cmpeq_epi32(four, same)) != 0xFFFF)
+    {
+      break;
+    }
+  }
+#else
+  for (; t + 4 <= end; t += 4)
+  {
+    std::uint32_t four[4];
+    std::memcpy(four, values + t, sizeof(four));
+    if (four[0] != run || four[1] != run || four[2] != run || four[3] != run)
+    {
+      break;
+    }
+  }
+#endif
+  return t - begin;
+}
+
 // Adds 8-bit values [begin, end) to `table` eight at a time, the eight at
 // once where they are equal (backgrounds, flat regions); returns where it
 // stopped (fewer than eight before the end).
@@ -278,6 +307,15 @@ struct StatisticsWorker
             length = 0;
           }
           ++length;
+          if constexpr (std::is_pointer<decltype(all.begin())>::value)
+          {
+            if (length >= 2 && !ghosts && nc == 1) // a run: the rest of it at once
+            {
+              const vtkIdType more = RunLength(all.begin(), t + 1, last, run);
+              length += static_cast<std::uint64_t>(more);
+              t += more;
+            }
+          }
         }
       }
       AddRun(tally, run, length);

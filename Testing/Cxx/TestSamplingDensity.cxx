@@ -9,7 +9,8 @@
 // an infinite scale. The sum Fill returns is the sum of the densities. 8-bit
 // values (a table of densities, the sum from counts per value, eight equal
 // values counted at once) in runs and not, and their statistics against the
-// same values in a 16-bit array.
+// same values in a 16-bit array; float statistics with runs counted four at a
+// time against those counted one by one.
 #include "BlueNoiseTestUtilities.h"
 #include "vtkSamplingDensity.h"
 
@@ -143,6 +144,33 @@ bool CheckByteStatistics(const std::vector<double>& values, const char* what)
   }
   return Check(bytes.Serialize() == shorts.Serialize(), what);
 }
+
+// The statistics of floats in runs of equal bits (the rest of a run counted
+// four at a time) are those counted one by one (with a ghost array that
+// flags nothing), from every start.
+bool CheckFloatStatistics()
+{
+  std::vector<double> values;
+  const double runs[] = { 0.25, -0.0, 0.0, std::nan(""), 0.7, 0.25, 3.0 };
+  for (int k = 0; k < 40; ++k)
+  {
+    values.insert(values.end(), static_cast<size_t>(1 + (k * 5) % 13), runs[k % 7]);
+  }
+  const auto array = Array<vtkFloatArray>(values, 1, 0);
+  const std::vector<unsigned char> none(values.size(), 0);
+  vtkSamplingDensity density;
+  density.SetMapping(vtkSamplingDensity::IDENTITY, 0);
+  bool same = true;
+  const auto n = static_cast<vtkIdType>(values.size());
+  for (vtkIdType begin = 0; begin < n && same; ++begin)
+  {
+    vtkSamplingBudget runs4, ones;
+    density.CollectStatistics(array, begin, n, nullptr, runs4);
+    density.CollectStatistics(array, begin, n, none.data(), ones);
+    same = runs4.Serialize() == ones.Serialize();
+  }
+  return Check(same, "float statistics, runs counted four at a time");
+}
 }
 
 int main()
@@ -194,5 +222,6 @@ int main()
     "unsigned char values with ghosts", longest, longest - 80);
   CheckByteStatistics<vtkUnsignedCharArray>(ByteRuns(0), "unsigned char statistics");
   CheckByteStatistics<vtkSignedCharArray>(ByteRuns(-128), "signed char statistics");
+  CheckFloatStatistics();
   return Summary("TestSamplingDensity");
 }
