@@ -26,15 +26,14 @@ void vtkErrorDiffusionLayerBacklog::AfterPush(const std::vector<Layer>& layers)
   ++this->Pushes;
   for (const Layer& layer : layers)
   {
+    {
+      std::lock_guard<std::mutex> lock(this->Queue);
+      this->Entries.push_back({ layer, this->Pushes });
+    }
     if (layer.Borrowed)
     {
-      this->EmitAll(); // what came before it first
-      std::lock_guard<std::mutex> emitting(this->Emitting);
-      this->Emit(layer);
-      continue;
+      this->EmitAll(); // the caller's buffers: emitted, in order, before the caller goes on
     }
-    std::lock_guard<std::mutex> lock(this->Queue);
-    this->Entries.push_back({ layer, this->Pushes });
   }
 }
 

@@ -283,6 +283,7 @@ struct StatisticsWorker
     vtkSMPThreadLocal<vtkSamplingBudget::FloatTally*> local(nullptr);
     const auto all = vtk::DataArrayValueRange(array);
     const int nc = array->GetNumberOfComponents();
+    const bool contiguous = !ghosts && nc == 1; // the values one after the other
     vtkSMPTools::For(begin, end, 65536, [&](vtkIdType first, vtkIdType last) {
       vtkSamplingBudget::FloatTally*& mine = local.Local();
       if (!mine)
@@ -309,7 +310,7 @@ struct StatisticsWorker
           ++length;
           if constexpr (std::is_pointer<decltype(all.begin())>::value)
           {
-            if (length >= 2 && !ghosts && nc == 1) // a run: the rest of it at once
+            if (length >= 2 && contiguous) // a run: the rest of it at once
             {
               const vtkIdType more = RunLength(all.begin(), t + 1, last, run);
               length += static_cast<std::uint64_t>(more);
