@@ -341,22 +341,29 @@ void Trim(vtkAbstractArray* array, vtkIdType tuples)
   array->Squeeze();
 }
 
-// A uniform offset in [-0.5, 0.5) for one axis of one voxel: SplitMix64's
-// finalizer over the seed, the voxel and the axis (24 bits: exact in float).
-double JitterOffset(std::uint64_t seed, int i, int j, int k, int axis)
+// Uniform offsets in [-0.5, 0.5) for the three axes of one voxel: SplitMix64's
+// finalizer over the seed and the voxel, cut into three 21-bit fields (exact
+// in float). One hash per point: hashing per axis took half of the points'
+// coordinate time at half density.
+void JitterOffsets(std::uint64_t seed, int i, int j, int k, double offsets[3])
 {
   std::uint64_t z = seed ^ (static_cast<std::uint64_t>(static_cast<std::uint32_t>(i)) * 0x9E3779B97F4A7C15ULL) ^
     (static_cast<std::uint64_t>(static_cast<std::uint32_t>(j)) * 0xC2B2AE3D27D4EB4FULL) ^
-    (static_cast<std::uint64_t>(static_cast<std::uint32_t>(k)) * 0x165667B19E3779F9ULL) ^
-    (static_cast<std::uint64_t>(axis + 1) * 0xD6E8FEB86659FD93ULL);
+    (static_cast<std::uint64_t>(static_cast<std::uint32_t>(k)) * 0x165667B19E3779F9ULL);
   z = (z ^ (z >> 30)) * 0xBF58476D1CE4E5B9ULL;
   z = (z ^ (z >> 27)) * 0x94D049BB133111EBULL;
   z ^= z >> 31;
-  return static_cast<double>(z >> 40) * (1.0 / 16777216.0) - 0.5;
+  constexpr std::uint64_t field = (1ULL << 21) - 1;
+  for (int a = 0; a < 3; ++a)
+  {
+    offsets[a] = static_cast<double>((z >> (21 * a + 1)) & field) * (1.0 / 2097152.0) - 0.5;
+  }
 }
 
 // The world coordinates of the samples of global layer z: ids are in-layer
-// indices, rowEnds where each row's ids end.
+// indices, rowEnds where each row's ids end. Each row's y and z terms are
+// summed once (without jitter): for an axis-aligned grid the result is the
+// same as summing per point, origin + spacing * index.
 template <typename T>
 void WriteCenters(T* xyz, const double m[16], const int extent[6], int z,
   const std::vector<vtkIdType>& ids, const std::vector<vtkIdType>& rowEnds, bool jitter,
@@ -368,21 +375,28 @@ void WriteCenters(T* xyz, const double m[16], const int extent[6], int z,
   {
     const int y = extent[2] + static_cast<int>(j);
     const vtkIdType rowStart = static_cast<vtkIdType>(j) * nx;
+    double row[3];
+    for (int r = 0; r < 3; ++r)
+    {
+      row[r] = m[4 * r + 1] * y + m[4 * r + 2] * z + m[4 * r + 3];
+    }
     for (; p < rowEnds[j]; ++p)
     {
       const int x = extent[0] + static_cast<int>(ids[p] - rowStart);
-      double ijk[3] = { static_cast<double>(x), static_cast<double>(y), static_cast<double>(z) };
-      if (jitter)
+      if (!jitter)
       {
-        for (int a = 0; a < 3; ++a)
+        for (int r = 0; r < 3; ++r)
         {
-          ijk[a] += JitterOffset(seed, x, y, z, a);
+          xyz[3 * p + r] = static_cast<T>(m[4 * r] * x + row[r]);
         }
+        continue;
       }
+      double d[3];
+      JitterOffsets(seed, x, y, z, d);
       for (int r = 0; r < 3; ++r)
       {
         xyz[3 * p + r] = static_cast<T>(
-          m[4 * r] * ijk[0] + m[4 * r + 1] * ijk[1] + m[4 * r + 2] * ijk[2] + m[4 * r + 3]);
+          m[4 * r] * (x + d[0]) + m[4 * r + 1] * (y + d[1]) + m[4 * r + 2] * (z + d[2]) + m[4 * r + 3]);
       }
     }
   }

@@ -259,6 +259,12 @@ check(jxyz.shape == bxyz.shape and np.array_equal(np.floor(jxyz + 0.5), bxyz),
       "jittered points stay in the voxels of the points without jitter")
 check(np.abs(jxyz - bxyz).max() > 0.3 and np.abs(jxyz - bxyz).max() <= 0.5,
       "jitter moves points by up to half a voxel")
+offsets = jxyz - bxyz  # uniform in [-0.5, 0.5) on each axis, the axes independent
+check(np.abs(offsets.mean(axis=0)).max() < 0.03 and np.abs(offsets.std(axis=0) - math.sqrt(1 / 12)).max() < 0.02,
+      "jitter offsets of mean 0 and the spread of a uniform variable: %s, %s"
+      % (offsets.mean(axis=0), offsets.std(axis=0)))
+correlation = np.corrcoef(offsets.T)[np.triu_indices(3, 1)]
+check(np.abs(correlation).max() < 0.06, "jitter offsets independent across axes: %s" % correlation)
 
 # Bad input: an error and empty outputs, not a crash.
 bad = vtkErrorDiffusionSampler()
