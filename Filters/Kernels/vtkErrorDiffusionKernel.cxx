@@ -444,6 +444,24 @@ vtkIdType CountActive(const float* g, size_t n)
   }
   return count;
 }
+
+// How many voxels of a row from idx on (step d, `left` of them to the row's
+// end) take the fast path: those marked in `interior` when given, else all
+// but the row's last when the row is `fast` (away from the faces of a layer
+// whose voxels and successors are all active).
+int FastRun(const unsigned char* interior, vtkIdType idx, vtkIdType d, int left, bool fast)
+{
+  if (!interior)
+  {
+    return fast ? left - 1 : 0;
+  }
+  int run = 0;
+  while (run < left && interior[idx + run * d])
+  {
+    ++run;
+  }
+  return run;
+}
 }
 
 //------------------------------------------------------------------------------
@@ -570,13 +588,70 @@ const unsigned char* vtkErrorDiffusionKernel::FindInterior(const float* density,
 }
 
 //------------------------------------------------------------------------------
+// The scan of n voxels of a row from idx on (error index eidx) whose six
+// targets are all active and inside the volume: no test on the targets. The
+// generator and what goes from voxel to voxel live in locals: a member would
+// be stored and reloaded around every byte stored to the mask, which may
+// alias it.
+template <bool Record>
+void vtkErrorDiffusionKernel::ScanRun(const float* density, unsigned char* mask, vtkIdType idx,
+  vtkIdType d, vtkIdType eidx, vtkIdType ed, vtkIdType ev, int n, float received, RunState& state)
+{
+  float* cur = this->Current.data();
+  float* nxt = this->Next.data();
+  Generator random = this->Random;
+  float carry = state.Carry;
+  float cachedG = state.CachedG;
+  // The parameters are read from memory (state's) at every voxel: held in
+  // locals, the compiler packs them into vector registers and shuffles each
+  // out at every voxel, which costs more.
+  const LevelParameters& level = state.Level;
+  const float* w = level.Weights;
+  vtkIdType count = 0;
+  for (int p = 0; p < n; ++p, idx += d, eidx += ed)
+  {
+    const float g = density[idx];
+    if (g != cachedG)
+    {
+      state.Level = this->ParametersOf(g);
+      cachedG = g;
+    }
+    // g + cur[eidx] (+ the reservoir) is off the critical path.
+    const float value = (g + cur[eidx] + received) + carry;
+    if (Record)
+    {
+      cur[eidx] = value - g;
+    }
+    const float threshold = level.Base + level.Modulation * random.Uniform();
+    // Branch-free: near g = 0.5 a branch on the outcome is mispredicted half
+    // of the time. value * w - b * w: the product does not wait for the
+    // comparison.
+    const unsigned char b = value >= threshold ? 1 : 0;
+    mask[idx] = b;
+    count += b;
+    const float e = value - static_cast<float>(b);
+    const float taken = value >= threshold ? w[TARGET_U] : 0.0f;
+    carry = value * w[TARGET_U] - taken;
+    cur[eidx - ed + ev] += e * w[TARGET_BACK_V];
+    cur[eidx + ev] += e * w[TARGET_V];
+    nxt[eidx - ev] += e * w[TARGET_Z_BACKV];
+    nxt[eidx - ed] += e * w[TARGET_Z_BACKU];
+    nxt[eidx] += e * w[TARGET_Z];
+  }
+  this->Random = random;
+  state.Carry = carry;
+  state.CachedG = cachedG;
+  state.Count += count;
+}
+
+//------------------------------------------------------------------------------
 // The scan of one layer. Record keeps what each voxel received (for
 // MeasureReceivedError) and costs a store per voxel, so it is a template
-// flag. Voxels away from the faces of a layer whose voxels and successors
-// are all active, and in other layers the voxels whose 3x3 neighborhood is
-// active in both (FindInterior), take a path without any test on the
-// targets: that is the bulk of the work on any large support, and the tests
-// cost a third of the time. The others go through SpreadAtFace.
+// flag. Runs of voxels away from the faces of a layer whose voxels and
+// successors are all active, and in other layers of voxels whose 3x3
+// neighborhood is active in both (FindInterior), go through ScanRun: that is
+// the bulk of the work on any large support, and the tests on the targets
+// cost a third of the time. The other voxels go through SpreadAtFace.
 template <bool Record>
 vtkIdType vtkErrorDiffusionKernel::ScanLayer(
   const float* density, const float* next, unsigned char* mask, int layer)
@@ -590,18 +665,14 @@ vtkIdType vtkErrorDiffusionKernel::ScanLayer(
   const LayerScan s = GetLayerScan(this->NX, this->NY, layer);
   const LayerScan es = GetLayerScan(this->NX, this->NY, layer, this->Pitch);
   this->SeedLayer(layer);
-  float* cur = this->Current.data();
-  float* nxt = this->Next.data();
   const vtkIdType V = s.VStride;
   const vtkIdType EV = es.VStride;
 
-  // The share for the next voxel of the scan stays in a register: it is the
-  // only dependency from one voxel to the next. It also carries, to the next
-  // active voxel of the scan, error that has no active target.
-  float carry = this->Carry;
-  float cachedG = -1.0f;
-  LevelParameters level; // of cachedG
-  vtkIdType count = 0;
+  // The share for the next voxel of the scan is the only dependency from one
+  // voxel to the next. It also carries, to the next active voxel of the scan,
+  // error that has no active target.
+  RunState state;
+  state.Carry = this->Carry;
 
   for (int q = 0; q < s.NV; ++q)
   {
@@ -615,58 +686,53 @@ vtkIdType vtkErrorDiffusionKernel::ScanLayer(
     const bool fastRow = hasPrevRow && hasNextRow && allActive;
     for (int p = 0; p < s.NU; ++p, idx += d, eidx += ed)
     {
+      const int run = FastRun(interior, idx, d, s.NU - p, fastRow && p > 0);
+      if (run > 0)
+      {
+        this->ScanRun<Record>(density, mask, idx, d, eidx, ed, EV, run, reservoir.Received, state);
+        reservoir.Remaining -= run;
+        p += run - 1;
+        idx += (run - 1) * d;
+        eidx += (run - 1) * ed;
+        continue;
+      }
       const float g = density[idx];
-      const bool hasPrevU = p > 0;
-      const bool hasNextU = p + 1 < s.NU;
-      const bool fast = interior ? interior[idx] != 0 : fastRow && hasPrevU && hasNextU;
-      if (!fast && !Active(g))
+      if (!Active(g))
       {
         const unsigned char b = g >= 1.0f ? 1 : 0;
         mask[idx] = b;
-        count += b;
+        state.Count += b;
         continue;
       }
-      if (g != cachedG)
+      if (g != state.CachedG)
       {
-        level = this->ParametersOf(g);
-        cachedG = g;
+        state.Level = this->ParametersOf(g);
+        state.CachedG = g;
       }
-      const float* w = level.Weights;
-      // g + cur[eidx] (+ the reservoir) is off the critical path.
-      const float value = (g + cur[eidx] + reservoir.Received) + carry;
+      // The draw of ScanRun, then the error spread over the targets there are.
+      const float value = (g + this->Current[eidx] + reservoir.Received) + state.Carry;
       if (Record)
       {
-        cur[eidx] = value - g;
+        this->Current[eidx] = value - g;
       }
-      const float threshold = level.Base + level.Modulation * this->Random.Uniform();
-      // Branch-free: near g = 0.5 a branch on the outcome is mispredicted
-      // half of the time.
+      const float threshold =
+        state.Level.Base + state.Level.Modulation * this->Random.Uniform();
       const unsigned char b = value >= threshold ? 1 : 0;
       mask[idx] = b;
-      count += b;
+      state.Count += b;
       const float e = value - static_cast<float>(b);
       --reservoir.Remaining;
-      if (fast)
-      {
-        // value * w - b * w: the product does not wait for the comparison.
-        const float taken = value >= threshold ? w[TARGET_U] : 0.0f;
-        carry = value * w[TARGET_U] - taken;
-        cur[eidx - ed + EV] += e * w[TARGET_BACK_V];
-        cur[eidx + EV] += e * w[TARGET_V];
-        nxt[eidx - EV] += e * w[TARGET_Z_BACKV];
-        nxt[eidx - ed] += e * w[TARGET_Z_BACKU];
-        nxt[eidx] += e * w[TARGET_Z];
-        continue;
-      }
+      const bool hasPrevU = p > 0;
+      const bool hasNextU = p + 1 < s.NU;
       const bool valid[6] = { hasNextU && Active(density[idx + d]),
         hasPrevU && hasNextRow && Active(density[idx - d + V]),
         hasNextRow && Active(density[idx + V]),
         hasPrevRow && nextLayerExists && Active(next[idx - V]),
         hasPrevU && nextLayerExists && Active(next[idx - d]),
         nextLayerExists && Active(next[idx]) };
-      carry = this->SpreadAtFace(e, w, valid, eidx, ed, EV, &reservoir);
+      state.Carry = this->SpreadAtFace(e, state.Level.Weights, valid, eidx, ed, EV, &reservoir);
     }
   }
-  this->Carry = carry;
-  return count;
+  this->Carry = state.Carry;
+  return state.Count;
 }

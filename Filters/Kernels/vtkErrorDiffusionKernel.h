@@ -219,6 +219,17 @@ private:
   static LayerScan GetLayerScan(int nx, int ny, int phase, vtkIdType pitch);
   LevelParameters Evaluate(float g) const;
 
+  // What the scan of a layer takes from one voxel to the next.
+  struct RunState
+  {
+    float Carry = 0.0f;     // the share in transit to the next voxel scanned
+    float CachedG = -1.0f;  // the density Level is for
+    LevelParameters Level;
+    vtkIdType Count = 0;    // samples so far
+  };
+  template <bool Record>
+  void ScanRun(const float* density, unsigned char* mask, vtkIdType idx, vtkIdType d,
+    vtkIdType eidx, vtkIdType ed, vtkIdType ev, int n, float received, RunState& state);
   // next: the densities of the following layer, nullptr if there is none.
   // Record keeps in Current what each voxel received (MeasureReceivedError).
   template <bool Record = false>
