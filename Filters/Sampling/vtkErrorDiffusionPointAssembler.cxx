@@ -363,8 +363,10 @@ void JitterOffsets(std::uint64_t seed, int i, int j, int k, double offsets[3])
 // The world coordinates of the samples of global layer z: ids are in-layer
 // indices, rowEnds where each row's ids end. Each row's y and z terms are
 // summed once (without jitter): for an axis-aligned grid the result is the
-// same as summing per point, origin + spacing * index.
-template <typename T>
+// same as summing per point, origin + spacing * index. Jittered points on an
+// axis-aligned grid (Axial: the matrix has no term off its diagonal) take the
+// diagonal terms only, three products instead of nine, with the same result.
+template <typename T, bool Axial>
 void WriteCenters(T* xyz, const double m[16], const int extent[6], int z,
   const std::vector<vtkIdType>& ids, const std::vector<vtkIdType>& rowEnds, bool jitter,
   std::uint64_t seed)
@@ -393,12 +395,31 @@ void WriteCenters(T* xyz, const double m[16], const int extent[6], int z,
       }
       double d[3];
       JitterOffsets(seed, x, y, z, d);
+      const double ijk[3] = { x + d[0], y + d[1], z + d[2] };
       for (int r = 0; r < 3; ++r)
       {
-        xyz[3 * p + r] = static_cast<T>(
-          m[4 * r] * (x + d[0]) + m[4 * r + 1] * (y + d[1]) + m[4 * r + 2] * (z + d[2]) + m[4 * r + 3]);
+        xyz[3 * p + r] = static_cast<T>(Axial ? m[5 * r] * ijk[r] + m[4 * r + 3]
+                                              : m[4 * r] * ijk[0] + m[4 * r + 1] * ijk[1] +
+              m[4 * r + 2] * ijk[2] + m[4 * r + 3]);
       }
     }
+  }
+}
+
+template <typename T>
+void WriteCenters(T* xyz, const double m[16], const int extent[6], int z,
+  const std::vector<vtkIdType>& ids, const std::vector<vtkIdType>& rowEnds, bool jitter,
+  std::uint64_t seed)
+{
+  const bool axial =
+    m[1] == 0.0 && m[2] == 0.0 && m[4] == 0.0 && m[6] == 0.0 && m[8] == 0.0 && m[9] == 0.0;
+  if (axial)
+  {
+    WriteCenters<T, true>(xyz, m, extent, z, ids, rowEnds, jitter, seed);
+  }
+  else
+  {
+    WriteCenters<T, false>(xyz, m, extent, z, ids, rowEnds, jitter, seed);
   }
 }
 

@@ -2,7 +2,9 @@
 // SPDX-License-Identifier: BSD-3-Clause
 // World coordinates: with a non-trivial origin, spacing and direction matrix
 // (and an extent that does not start at 0), every point sits on the center of
-// a sampled voxel; the field data records the sampling grid.
+// a sampled voxel; the field data records the sampling grid. Jittered
+// points move inside their voxels by the same offsets (in index space) on a
+// rotated grid as on an axis-aligned one.
 #include "SamplerTestUtilities.h"
 #include "vtkDoubleArray.h"
 #include "vtkFieldData.h"
@@ -12,8 +14,10 @@
 #include "vtkPoints.h"
 #include "vtkTransform.h"
 
+#include <algorithm>
 #include <cmath>
 #include <set>
+#include <vector>
 
 using namespace bluenoise_test;
 
@@ -113,5 +117,52 @@ int main()
         "sampling grid values");
     }
   }
+
+  // Jitter: the offset of each point from its voxel center, in index space,
+  // on the rotated grid and on the same grid axis-aligned.
+  vtkNew<vtkImageData> aligned;
+  aligned->DeepCopy(image);
+  vtkNew<vtkMatrix3x3> identity;
+  aligned->SetDirectionMatrix(identity);
+  std::vector<std::vector<double>> offsets;
+  for (vtkImageData* grid : { image.GetPointer(), aligned.GetPointer() })
+  {
+    std::vector<double> gridOffsets;
+    vtkNew<vtkErrorDiffusionSampler> centers, jittered;
+    for (vtkErrorDiffusionSampler* sampler : { centers.GetPointer(), jittered.GetPointer() })
+    {
+      sampler->SetInputData(grid);
+      sampler->SetDensityMappingToIdentity();
+      sampler->SetOutputPointsPrecision(vtkAlgorithm::DOUBLE_PRECISION);
+      sampler->SetUseNumberOfPoints(false); // the densities as they are
+      sampler->SetJitter(sampler == jittered.GetPointer());
+      sampler->Update();
+    }
+    const vtkIdType n = centers->GetOutput()->GetNumberOfPoints();
+    Check(jittered->GetOutput()->GetNumberOfPoints() == n, "jitter keeps the points");
+    double largest = 0.0;
+    for (vtkIdType p = 0; p < n && jittered->GetOutput()->GetNumberOfPoints() == n; ++p)
+    {
+      double a[3], b[3], ia[3], ib[3];
+      centers->GetOutput()->GetPoint(p, a);
+      jittered->GetOutput()->GetPoint(p, b);
+      grid->TransformPhysicalPointToContinuousIndex(a, ia);
+      grid->TransformPhysicalPointToContinuousIndex(b, ib);
+      for (int c = 0; c < 3; ++c)
+      {
+        gridOffsets.push_back(ib[c] - ia[c]);
+        largest = std::max(largest, std::abs(ib[c] - ia[c]));
+      }
+    }
+    Check(largest > 0.45 && largest <= 0.5 + 1e-9,
+      "jittered points within half a voxel of their centers, up to " + Str(largest));
+    offsets.push_back(gridOffsets);
+  }
+  double apart = offsets[0].size() == offsets[1].size() ? 0.0 : 1.0;
+  for (size_t i = 0; i < offsets[0].size() && i < offsets[1].size(); ++i)
+  {
+    apart = std::max(apart, std::abs(offsets[0][i] - offsets[1][i]));
+  }
+  Check(apart < 1e-9, "the same jitter on the rotated grid and the axis-aligned one: " + Str(apart));
   return Summary("TestErrorDiffusionSamplerGeometry");
 }
