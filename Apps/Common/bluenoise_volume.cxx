@@ -3,13 +3,13 @@
 // See bluenoise_volume.h.
 #include "bluenoise_volume.h"
 #include "bluenoise_messages.h"
+#include "bluenoise_raw_reader.h"
 #include "bluenoise_volume_headers.h"
 #include "bluenoise_xml_reader.h"
 
 #include "vtkImageData.h"
 #include "vtkInformation.h"
 #include "vtkStreamingDemandDrivenPipeline.h"
-#include "vtkImageReader.h"
 #include "vtkMatrix3x3.h"
 #include "vtkMatrix4x4.h"
 #include "vtkMetaImageReader.h"
@@ -37,11 +37,11 @@ bool EndsWith(const std::string& s, const std::string& suffix)
     vtksys::SystemTools::LowerCase(s.substr(s.size() - suffix.size())) == suffix;
 }
 
-// A raw MetaImage's voxels through vtkImageReader, which reads sub-extents.
+// A raw MetaImage's voxels through a reader of sub-extents (bluenoise_raw_reader.h).
 vtkSmartPointer<vtkAlgorithm> NewRawReader(const Volume& volume)
 {
   const RawLayout& raw = volume.Raw;
-  auto r = vtkSmartPointer<vtkImageReader>::New();
+  auto r = NewRawImageReader();
   r->SetFileName(raw.DataFile.c_str());
   r->SetFileDimensionality(3);
   r->SetDataScalarType(raw.ScalarType);
@@ -59,7 +59,6 @@ vtkSmartPointer<vtkAlgorithm> NewRawReader(const Volume& volume)
   {
     r->SetDataByteOrderToLittleEndian();
   }
-  r->SetScalarArrayName("MetaImage"); // the name vtkMetaImageReader gives
   return r;
 }
 
