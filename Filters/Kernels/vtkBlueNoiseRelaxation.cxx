@@ -221,19 +221,27 @@ void vtkBlueNoiseRelaxation::SetDensity(float g)
   // the radius can be found.
   const int cap = static_cast<int>(
     std::min(std::ceil(this->Limit), static_cast<double>((radius + 1) * (radius + 1))));
-  if (radius != this->Radius || cap != this->Cap || this->Shells.empty())
+  if (radius != this->Radius || cap != this->Cap || !this->Rows)
   {
-    this->SetRows(radius, cap);
+    // Densities that vary from sample to sample change the radius or the cap
+    // often: each pair's rows are made once.
+    this->Radius = radius;
+    this->Cap = cap;
+    RowSet& rows = this->RowSets[static_cast<size_t>(radius * RowSetCaps + cap)];
+    if (rows.Shells.empty())
+    {
+      rows = MakeRows(radius, cap);
+    }
+    this->Rows = &rows;
   }
 }
 
 //------------------------------------------------------------------------------
 // The rows searched around a sample and its face neighbors, for a search
 // radius and cap.
-void vtkBlueNoiseRelaxation::SetRows(int radius, int cap)
+vtkBlueNoiseRelaxation::RowSet vtkBlueNoiseRelaxation::MakeRows(int radius, int cap)
 {
-  this->Radius = radius;
-  this->Cap = cap;
+  RowSet set;
   const auto searched = [&](int dz, int dy) {
     return std::abs(dz) <= radius && std::abs(dy) <= radius && dz * dz + dy * dy < cap;
   };
@@ -248,7 +256,6 @@ void vtkBlueNoiseRelaxation::SetRows(int radius, int cap)
     }
   };
   std::vector<std::pair<int, int>> rows; // squared distance and cell of the searched rows
-  this->Loaded.clear();
   for (int dz = -radius - 1; dz <= radius + 1; ++dz)
   {
     for (int dy = -radius - 1; dy <= radius + 1; ++dy)
@@ -260,7 +267,7 @@ void vtkBlueNoiseRelaxation::SetRows(int radius, int cap)
       if (searched(dz, dy) || searched(dz - 1, dy) || searched(dz + 1, dy) ||
         searched(dz, dy - 1) || searched(dz, dy + 1))
       {
-        add(this->Loaded, dz, dy);
+        add(set.Loaded, dz, dy);
       }
     }
   }
@@ -269,7 +276,6 @@ void vtkBlueNoiseRelaxation::SetRows(int radius, int cap)
   // The rows at one distance are one row turned by quarter turns about the
   // center (the search is symmetric): four of each, but for the center's own
   // row, repeated here so that every shell has four.
-  this->Shells.clear();
   for (size_t k = 0; k < rows.size();)
   {
     const size_t n = rows[k].first == 0 ? 1 : 4;
@@ -278,9 +284,10 @@ void vtkBlueNoiseRelaxation::SetRows(int radius, int cap)
     {
       shell.Cells[i] = rows[k + i % n].second;
     }
-    this->Shells.push_back(shell);
+    set.Shells.push_back(shell);
     k += n;
   }
+  return set;
 }
 
 //------------------------------------------------------------------------------
@@ -321,7 +328,7 @@ int vtkBlueNoiseRelaxation::Nearest(int fx, int fy, int fz, int enough) const
   const std::uint64_t left = std::uint64_t(1) << (62 - this->Radius);
   const std::uint64_t* window = this->Window + (fz + Reach) * Span + fy + Reach;
   int best = this->Cap;
-  for (const Shell& shell : this->Shells)
+  for (const Shell& shell : this->Rows->Shells)
   {
     if (shell.Squared >= best || best <= enough)
     {
@@ -385,7 +392,7 @@ inline unsigned vtkBlueNoiseRelaxation::CrowdedFaces(int reach) const
 void vtkBlueNoiseRelaxation::RelaxSample(int x, int y, int z, float g)
 {
   this->SetDensity(g);
-  this->Load(this->Loaded, x, y);
+  this->Load(this->Rows->Loaded, x, y);
   this->Window[Reach * Span + Reach] &= ~(std::uint64_t(1) << 32); // not its own neighbor
   const int current = this->Nearest(0, 0, 0, -1);
   if (current >= this->Limit)

@@ -140,7 +140,12 @@ private:
   std::ptrdiff_t RowStart(int y) const;
   void Set(int x, int y, int z, bool sample);
   void SetDensity(float g);
-  void SetRows(int radius, int cap);
+  struct RowSet // what the searches read for one radius and cap
+  {
+    std::vector<RowRun> Loaded; // the rows around a sample and its face neighbors
+    std::vector<Shell> Shells;  // the rows within the radius and nearer than the cap, nearest first
+  };
+  static RowSet MakeRows(int radius, int cap);
   void Load(const std::vector<RowRun>& runs, int x, int y);
   int Nearest(int fx, int fy, int fz, int enough) const;
   unsigned BlockedFaces(int x, int y) const;
@@ -165,8 +170,11 @@ private:
   double Limit = 0.0;         // the squared distance below which a sample moves
   int Radius = 1;             // of the box searched around a voxel
   int Cap = 1;                // distances are counted up to this one (squared)
-  std::vector<RowRun> Loaded; // the rows the searches around a sample and its face neighbors read
-  std::vector<Shell> Shells;  // the rows within Radius and nearer than Cap, nearest first
+  // The row sets by radius and cap (radius * RowSetCaps + cap), made as they
+  // come up, and the one for Radius and Cap.
+  static constexpr int RowSetCaps = (MaximumRadius + 1) * (MaximumRadius + 1) + 1;
+  std::vector<RowSet> RowSets = std::vector<RowSet>((MaximumRadius + 1) * RowSetCaps);
+  const RowSet* Rows = nullptr;
   // The bits around the sample being relaxed: rows dz, dy in [-Reach, Reach]
   // (Reach = MaximumRadius + 1), each 64 voxels wide, the sample's x at bit 32.
   static constexpr int Reach = MaximumRadius + 1;
