@@ -19,9 +19,9 @@
 // errors (VTK's ErrorEvent) and failed allocations (std::bad_alloc) are
 // caught too. Every failure is a message naming the file and the problem.
 //
-// Streaming: raw MetaImage (read by vtkImageReader from the layout parsed
-// here: VTK's vtkMetaImageReader reads the whole file into any extent it is
-// asked for, overrunning a slab), raw NRRD and VTI files with raw
+// Streaming: raw MetaImage (read by bluenoise_raw_reader.h's reader from the
+// layout parsed here: VTK's vtkMetaImageReader reads the whole file into any
+// extent it is asked for, overrunning a slab), raw NRRD and VTI files with raw
 // (uncompressed, appended) data read any sub-extent, so ReadVolume leaves
 // those unread (Volume::Streamable) for a consumer that requests z-slabs
 // (vtkErrorDiffusionSampler::SetNumberOfSlabs). NIfTI, compressed and ASCII
@@ -79,7 +79,7 @@ struct Volume
   double BytesPerVoxel = 0.0;
   /// The file's reader reads sub-extents (raw MetaImage, raw NRRD, raw appended VTI).
   bool StreamableFile = false;
-  /// Raw MetaImage: its layout, read with vtkImageReader (vtkMetaImageReader
+  /// Raw MetaImage: its layout, read with NewRawImageReader() (vtkMetaImageReader
   /// reads the whole file into whatever extent it was asked for).
   RawLayout Raw;
   /// Streamed: the reader, its information updated and one layer read (Sample); else null.

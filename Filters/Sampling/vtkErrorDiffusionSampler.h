@@ -69,8 +69,8 @@
  * vtkXMLImageDataReader on VTI with raw appended data) then read one slab at
  * a time; others deliver more than asked for, which is correct but saves
  * nothing. vtkMetaImageReader (VTK 9.2) is not one of them: it reads the
- * whole file (bluenoise-sample reads raw MetaImage through vtkImageReader
- * from the parsed header instead). The points and the mask (GenerateMask) still
+ * whole file (bluenoise-sample reads raw MetaImage through a vtkImageReader2
+ * of its own, from the parsed header, instead). The points and the mask (GenerateMask) still
  * grow with the output.
  *
  * Time O(voxels); memory besides the input and the output a few layers. The
