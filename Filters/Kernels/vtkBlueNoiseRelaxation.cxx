@@ -221,18 +221,14 @@ void vtkBlueNoiseRelaxation::SetDensity(float g)
   // the radius can be found.
   const int cap = static_cast<int>(
     std::min(std::ceil(this->Limit), static_cast<double>((radius + 1) * (radius + 1))));
-  if (radius != this->Radius || cap != this->Cap || this->Rows < 0)
+  // Densities that vary from sample to sample change the radius or the cap
+  // often: each pair's rows are made once.
+  this->Radius = radius;
+  this->Cap = cap;
+  RowSet& rows = this->RowSets[static_cast<size_t>(radius * RowSetCaps + cap)];
+  if (rows.Shells.empty())
   {
-    // Densities that vary from sample to sample change the radius or the cap
-    // often: each pair's rows are made once.
-    this->Radius = radius;
-    this->Cap = cap;
-    this->Rows = radius * RowSetCaps + cap;
-    RowSet& rows = this->RowSets[static_cast<size_t>(this->Rows)];
-    if (rows.Shells.empty())
-    {
-      rows = MakeRows(radius, cap);
-    }
+    rows = MakeRows(radius, cap);
   }
 }
 
@@ -328,7 +324,7 @@ int vtkBlueNoiseRelaxation::Nearest(int fx, int fy, int fz, int enough) const
   const std::uint64_t left = std::uint64_t(1) << (62 - this->Radius);
   const std::uint64_t* window = this->Window + (fz + Reach) * Span + fy + Reach;
   int best = this->Cap;
-  for (const Shell& shell : this->RowSets[static_cast<size_t>(this->Rows)].Shells)
+  for (const Shell& shell : this->CurrentRows().Shells)
   {
     if (shell.Squared >= best || best <= enough)
     {
@@ -392,7 +388,7 @@ inline unsigned vtkBlueNoiseRelaxation::CrowdedFaces(int reach) const
 void vtkBlueNoiseRelaxation::RelaxSample(int x, int y, int z, float g)
 {
   this->SetDensity(g);
-  this->Load(this->RowSets[static_cast<size_t>(this->Rows)].Loaded, x, y);
+  this->Load(this->CurrentRows().Loaded, x, y);
   this->Window[Reach * Span + Reach] &= ~(std::uint64_t(1) << 32); // not its own neighbor
   const int current = this->Nearest(0, 0, 0, -1);
   if (current >= this->Limit)

@@ -171,10 +171,13 @@ private:
   int Radius = 1;             // of the box searched around a voxel
   int Cap = 1;                // distances are counted up to this one (squared)
   // The row sets by radius and cap (at radius * RowSetCaps + cap), made as
-  // they come up, and the index of the one for Radius and Cap (-1: none yet).
+  // they come up (SetDensity).
   static constexpr int RowSetCaps = (MaximumRadius + 1) * (MaximumRadius + 1) + 1;
   std::vector<RowSet> RowSets = std::vector<RowSet>((MaximumRadius + 1) * RowSetCaps);
-  int Rows = -1;
+  const RowSet& CurrentRows() const
+  {
+    return this->RowSets[static_cast<size_t>(this->Radius * RowSetCaps + this->Cap)];
+  }
   // The bits around the sample being relaxed: rows dz, dy in [-Reach, Reach]
   // (Reach = MaximumRadius + 1), each 64 voxels wide, the sample's x at bit 32.
   static constexpr int Reach = MaximumRadius + 1;
