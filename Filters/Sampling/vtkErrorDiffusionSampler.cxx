@@ -23,6 +23,7 @@
 #include "vtkPolyData.h"
 #include "vtkSMPTools.h"
 #include "vtkSamplingBudget.h"
+#include "vtkSamplingLattice.h"
 #include "vtkStreamingDemandDrivenPipeline.h"
 #include "vtkUnsignedCharArray.h"
 #include "vtkVersionMacros.h"
@@ -181,6 +182,7 @@ public:
   int Sampled[6] = { 0, -1, 0, -1, 0, -1 }; // the piece: full layers
   int ScanFirst = 0;                        // first layer scanned (overlap included)
   bool Piece = false;                       // one piece of several
+  bool Cells = false;                       // the sites are the input's cells
   std::vector<Step> Steps;
   size_t Current = 0;
   bool Running = false;
@@ -289,17 +291,18 @@ int vtkErrorDiffusionSampler::RequestInformation(
   this->Internals->Points = nullptr;
   this->Internals->Mask = nullptr;
   const int empty[6] = { 0, -1, 0, -1, 0, -1 };
-  if (this->GenerateMask && inInfo->Has(wholeKey))
-  {
-    maskInfo->CopyEntry(inInfo, wholeKey);
-  }
-  else
-  {
-    maskInfo->Set(wholeKey, empty, 6);
-  }
+  maskInfo->CopyEntry(inInfo, wholeKey);
   maskInfo->CopyEntry(inInfo, vtkDataObject::ORIGIN());
   maskInfo->CopyEntry(inInfo, vtkDataObject::SPACING());
   maskInfo->CopyEntry(inInfo, vtkDataObject::DIRECTION());
+  if (this->SamplesCells())
+  {
+    vtkSamplingLattice::ToCellLattice(maskInfo);
+  }
+  if (!this->GenerateMask || !inInfo->Has(wholeKey))
+  {
+    maskInfo->Set(wholeKey, empty, 6);
+  }
   vtkDataObject::SetPointDataActiveScalarInfo(maskInfo, VTK_UNSIGNED_CHAR, 1);
   return 1;
 }
@@ -335,9 +338,17 @@ int vtkErrorDiffusionSampler::RequestUpdateExtent(
   otherInfo->CopyEntry(outInfo, SDDP::UPDATE_NUMBER_OF_GHOST_LEVELS());
   vtkInformation* inInfo = inputVector[0]->GetInformationObject(0);
   vtkInternals& run = *this->Internals;
-  int whole[6] = { 0, -1, 0, -1, 0, -1 };
-  inInfo->Get(SDDP::WHOLE_EXTENT(), whole);
-  if (run.Running && !std::equal(whole, whole + 6, run.Whole))
+  int inputWhole[6] = { 0, -1, 0, -1, 0, -1 };
+  inInfo->Get(SDDP::WHOLE_EXTENT(), inputWhole);
+  // The plan is made on the sites' lattice: the points, or the cells.
+  const bool cells = this->SamplesCells();
+  int whole[6];
+  std::copy(inputWhole, inputWhole + 6, whole);
+  if (cells)
+  {
+    vtkSamplingLattice::CellExtent(inputWhole, whole);
+  }
+  if (run.Running && (cells != run.Cells || !std::equal(whole, whole + 6, run.Whole)))
   {
     run.Running = false; // the plan of another input
   }
@@ -349,6 +360,7 @@ int vtkErrorDiffusionSampler::RequestUpdateExtent(
       ? outInfo->Get(SDDP::UPDATE_NUMBER_OF_PIECES())
       : 1;
     this->PlanRun(whole, piece, pieces);
+    run.Cells = cells;
     // The last output's arrays that nothing else holds are written again
     // (the executive empties the output before RequestData).
     run.Assembler.Recycle(vtkPolyData::GetData(outputVector, 0));
@@ -363,6 +375,11 @@ int vtkErrorDiffusionSampler::RequestUpdateExtent(
   const int empty[6] = { 0, -1, 0, -1, 0, -1 };
   vtkInformation* maskInfo = outputVector->GetInformationObject(1);
   maskInfo->Set(SDDP::UPDATE_EXTENT(), this->GenerateMask ? run.Sampled : empty, 6);
+  if (cells)
+  {
+    const int sites[6] = { extent[0], extent[1], extent[2], extent[3], extent[4], extent[5] };
+    vtkSamplingLattice::PointExtent(sites, inputWhole, extent);
+  }
   // The request is the extent alone: the piece is already in it.
   inInfo->Set(SDDP::UPDATE_EXTENT(), extent, 6);
   inInfo->Set(SDDP::UPDATE_PIECE_NUMBER(), 0);
@@ -426,6 +443,14 @@ bool vtkErrorDiffusionSampler::IsAborted()
 }
 
 //------------------------------------------------------------------------------
+bool vtkErrorDiffusionSampler::SamplesCells()
+{
+  vtkInformation* selection = this->GetInputArrayInformation(0);
+  return selection->Has(vtkDataObject::FIELD_ASSOCIATION()) &&
+    selection->Get(vtkDataObject::FIELD_ASSOCIATION()) == vtkDataObject::FIELD_ASSOCIATION_CELLS;
+}
+
+//------------------------------------------------------------------------------
 bool vtkErrorDiffusionSampler::ValidateProperties()
 {
   if (!std::isfinite(this->DensityScale))
@@ -461,20 +486,30 @@ vtkDataArray* vtkErrorDiffusionSampler::GetDensityArray(
     std::string(selection->Get(vtkDataObject::FIELD_NAME())).empty())
   {
     // An empty name (ParaView before the user picks an array): active scalars.
+    // (The sites' data: the cell data when the sites are the cells.)
     abstractArray = input->GetPointData()->GetScalars();
-    association = vtkDataObject::FIELD_ASSOCIATION_POINTS;
+    association = this->Internals->Cells ? vtkDataObject::FIELD_ASSOCIATION_CELLS
+                                         : vtkDataObject::FIELD_ASSOCIATION_POINTS;
   }
   if (!abstractArray)
   {
-    vtkErrorMacro("No density array: select a point-data array with SetInputArrayToProcess "
-                  "(the input has no active scalars).");
+    vtkErrorMacro("No density array: select a point- or cell-data array with "
+                  "SetInputArrayToProcess (the input has no active scalars).");
     return nullptr;
   }
   const char* name = abstractArray->GetName() ? abstractArray->GetName() : "";
-  if (association != vtkDataObject::FIELD_ASSOCIATION_POINTS)
+  const int expected = this->Internals->Cells ? vtkDataObject::FIELD_ASSOCIATION_CELLS
+                                              : vtkDataObject::FIELD_ASSOCIATION_POINTS;
+  if (association == vtkDataObject::FIELD_ASSOCIATION_CELLS && association != expected)
   {
-    vtkErrorMacro("The density array '" << name << "' is not point data: only point data is "
-                                        << "sampled.");
+    vtkErrorMacro("The density array '" << name << "' was found in the cell data: select it "
+                                        << "with the association FIELD_ASSOCIATION_CELLS to "
+                                        << "sample one site per cell.");
+    return nullptr;
+  }
+  if (association != expected)
+  {
+    vtkErrorMacro("The density array '" << name << "' is neither point nor cell data.");
     return nullptr;
   }
   vtkDataArray* array = vtkDataArray::SafeDownCast(abstractArray);
@@ -488,7 +523,7 @@ vtkDataArray* vtkErrorDiffusionSampler::GetDensityArray(
   {
     vtkErrorMacro("The density array '" << name << "' has " << array->GetNumberOfTuples()
                                         << " tuples for " << input->GetNumberOfPoints()
-                                        << " voxels.");
+                                        << (this->Internals->Cells ? " cells." : " voxels."));
     return nullptr;
   }
   // Component == the number of components is the magnitude: ParaView's
@@ -963,7 +998,7 @@ bool vtkErrorDiffusionSampler::Advance(vtkImageData* input, vtkInformationVector
 int vtkErrorDiffusionSampler::RequestData(
   vtkInformation* request, vtkInformationVector** inputVector, vtkInformationVector* outputVector)
 {
-  vtkImageData* input = vtkImageData::GetData(inputVector[0], 0);
+  vtkImageData* image = vtkImageData::GetData(inputVector[0], 0);
   vtkPolyData* output = vtkPolyData::GetData(outputVector, 0);
   vtkImageData* mask = vtkImageData::GetData(outputVector, 1);
   vtkInternals& run = *this->Internals;
@@ -978,10 +1013,16 @@ int vtkErrorDiffusionSampler::RequestData(
     request->Remove(continueKey);
     return status;
   };
-  if (!input)
+  if (!image)
   {
     vtkErrorMacro("No input image.");
     return fail(0);
+  }
+  // The sites sampled: the image's points, or its cells' centres.
+  vtkSmartPointer<vtkImageData> input = image;
+  if (run.Cells)
+  {
+    input = vtkSamplingLattice::FromCells(image);
   }
   if (!run.Running)
   {
@@ -1001,7 +1042,7 @@ int vtkErrorDiffusionSampler::RequestData(
     }
     run.Running = true;
   }
-  if (!this->Advance(input, inputVector))
+  if (!this->Advance(input.Get(), inputVector))
   {
     return fail(this->IsAborted() ? 1 : 0);
   }
@@ -1010,7 +1051,7 @@ int vtkErrorDiffusionSampler::RequestData(
     request->Set(continueKey, 1);
     return 1;
   }
-  this->FinishOutput(input, output, mask);
+  this->FinishOutput(input.Get(), output, mask);
   run.Running = false;
   run.Points = nullptr;
   run.Mask = nullptr;

@@ -405,6 +405,7 @@ private:
   std::unique_ptr<vtkInternals> Internals;
 
   bool IsAborted();
+  bool SamplesCells();
   bool ValidateProperties();
   void PlanRun(const int whole[6], int piece, int pieces);
   bool StartRun(vtkInformation* outInfo, vtkInformationVector** inputVector);

@@ -65,14 +65,16 @@ int main()
   auto cells = MakeConstantVolume(5, 0.2f);
   vtkNew<vtkFloatArray> cellValues;
   cellValues->SetName("cellValues");
-  cellValues->SetNumberOfValues(64);
+  // A cell array is sampled per cell (TestErrorDiffusionSamplerCellData); one
+  // with fewer tuples than the 64 cells is refused.
+  cellValues->SetNumberOfValues(60);
   cellValues->Fill(0.5);
   cells->GetCellData()->AddArray(cellValues);
   Expect(cells,
     [](vtkErrorDiffusionSampler* s) {
       s->SetInputArrayToProcess(0, 0, 0, vtkDataObject::FIELD_ASSOCIATION_CELLS, "cellValues");
     },
-    "is not point data", "cell array");
+    "60 tuples for 64 cells", "cell array of the wrong length");
 
   auto empty = vtkSmartPointer<vtkImageData>::New();
   empty->SetExtent(0, -1, 0, -1, 0, -1);
