@@ -667,6 +667,9 @@ int vtkBlueNoiseSpectrum::RequestData(
   table->Initialize();
   image->Initialize();
   this->NumberOfTransformedRealizations = 0;
+  // Bad input is reported (vtkErrorMacro) and leaves empty outputs, yet the
+  // execution succeeds: a failed one would leave what is downstream (the
+  // chart that shows the table) holding the last good spectrum.
   // An aborted input (an empty sampler output) is no error: stop before checking it.
   if (this->IsAborted())
   {
@@ -678,14 +681,14 @@ int vtkBlueNoiseSpectrum::RequestData(
   if (!this->ValidateInputs(inputVector, pieces) || !this->CombinePieces(pieces, realizations) ||
     !this->BuildGrids(realizations))
   {
-    return 0;
+    return 1;
   }
   vtkBlueNoiseSpectrumKernel kernel;
   kernel.SetWeight(this->Weight);
   const int accumulated = this->Accumulate(realizations, kernel);
   if (accumulated < 0)
   {
-    return 0;
+    return 1;
   }
   const int* dims = realizations[0].Grid.Dimensions;
   if (this->GenerateSpectrumImage)
@@ -702,7 +705,7 @@ int vtkBlueNoiseSpectrum::RequestData(
   if (!Guarded(error, [&] { return kernel.Compute(result, &error); }))
   {
     vtkErrorMacro("Cannot compute the spectrum: " << error << ".");
-    return 0;
+    return 1;
   }
   if (!result.Warning.empty())
   {
@@ -715,7 +718,7 @@ int vtkBlueNoiseSpectrum::RequestData(
     vtkErrorMacro("Cannot allocate the " << dims[0] << " x " << dims[1] << " x " << dims[2]
                                          << " spectrum image.");
     table->Initialize();
-    return 0;
+    return 1;
   }
   this->UpdateProgress(1.0);
   return 1;

@@ -56,7 +56,10 @@
  * an input grid with a dimension below 2, realizations of different grid
  * shapes, negative or non-finite counts, malformed SamplingGrid field data, a
  * singular direction matrix, a grid of more than MaximumNumberOfGridPoints
- * points, memory that cannot be allocated (std::bad_alloc is caught). A mask
+ * points, memory that cannot be allocated (std::bad_alloc is caught). The
+ * execution still succeeds, with the empty outputs: a failed one would stop
+ * the pipeline before what shows the table (ParaView's chart), which would go
+ * on showing the last good spectrum. A mask
  * with every voxel set (g = 1) has no power off DC: a warning, and L = 0,
  * anisotropy 0, S = 1 by convention.
  *

@@ -16,11 +16,9 @@ import argparse
 import json
 import os
 import shutil
-import signal
-import subprocess
-import sys
 
-from bluenoise_testing import SKIP, check, finish
+from bluenoise_testing import check, finish
+from paraview_gui import complaints, run_paraview
 
 
 def image_stats(path):
@@ -46,20 +44,6 @@ def image_stats(path):
     return w, h, float(differs.mean()), len(colors), float(counts.max()) / len(pixels)
 
 
-# Lines of the paraview output that are not the GUI's: Xvfb's own start-up notes.
-HARMLESS = ("_XSERVTransmkdir", "xvfb-run:", "Process started")
-
-
-def is_complaint(line):
-    """A warning or error of ParaView, VTK, Qt or the plugin."""
-    text = line.strip()
-    if not text or any(h in text for h in HARMLESS):
-        return False
-    lowered = text.lower()
-    return any(word in lowered for word in ("warn", "error", "err|", "could not", "cannot", "failed",
-                                            "traceback"))
-
-
 def main():
     parser = argparse.ArgumentParser()
     parser.add_argument("--paraview", required=True)
@@ -77,52 +61,25 @@ def main():
 
     command = [args.paraview, "--dr", "--plugin-search-paths=" + args.plugin_dir,
                "--plugins=" + args.plugin_name, "--script=" + script, "--exit"]
-    if args.xvfb_run:
-        # -noreset: a connection opened while the server resets (after its
-        # last client left) fails.
-        command = [args.xvfb_run, "-a", "-s", "-screen 0 1280x1024x24 -noreset"] + command
-    elif not os.environ.get("DISPLAY"):
-        print("SKIP: no DISPLAY and no xvfb-run to start the ParaView GUI")
-        sys.exit(SKIP)
-
-    env = dict(os.environ)
-    env["BLUENOISE_GUI_OUTPUT"] = args.out
-    # The plugin must come from --plugins, not from a PV_PLUGIN_PATH of the caller.
-    env.pop("PV_PLUGIN_PATH", None)
-    if not env.get("XDG_RUNTIME_DIR"):
-        runtime = os.path.join(args.out, "runtime")
-        os.makedirs(runtime, mode=0o700)
-        env["XDG_RUNTIME_DIR"] = runtime
-    print("running: " + " ".join(command), flush=True)
-    # A session of its own, so that a timeout ends xvfb-run, Xvfb and paraview together.
-    process = subprocess.Popen(command, env=env, stdout=subprocess.PIPE, stderr=subprocess.STDOUT,
-                               start_new_session=True)
-    try:
-        output, _ = process.communicate(timeout=args.timeout)
-        returncode = process.returncode
-    except subprocess.TimeoutExpired:
-        os.killpg(process.pid, signal.SIGTERM)  # lets xvfb-run stop Xvfb and clean up
-        try:
-            output, _ = process.communicate(timeout=10)
-        except subprocess.TimeoutExpired:
-            os.killpg(process.pid, signal.SIGKILL)
-            output, _ = process.communicate()
-        returncode = None
-    output = output.decode(errors="replace")
-    print("---- paraview output ----\n" + output.rstrip() + "\n-------------------------", flush=True)
+    returncode, output = run_paraview(command, args.out, args.timeout, args.xvfb_run,
+                                      {"BLUENOISE_GUI_OUTPUT": args.out})
     # The session's log: no warning or error anywhere (a GUI user sees them as popups or in
     # the Output Messages window, which echoes them on stderr).
-    bad = [line for line in output.splitlines() if is_complaint(line)]
+    result_file = os.path.join(args.out, "result.json")
+    result = {}
+    if os.path.exists(result_file):
+        with open(result_file) as f:
+            result = json.load(f)
+    # The messages the script provokes on purpose (a bad run), and nothing else.
+    expected = result.get("expected_messages", [])
+    bad = [line for line in complaints(output) if not any(e in line for e in expected)]
     check(not bad, "no warning or error in the GUI's output (%d line(s)%s)"
           % (len(bad), "".join("\n      " + line for line in bad[:10])))
     check(returncode == 0, "paraview exited with 0 (got %r%s)"
           % (returncode, ", timed out after %gs" % args.timeout if returncode is None else ""))
 
-    result_file = os.path.join(args.out, "result.json")
     if not check(os.path.exists(result_file), "the GUI script ran (%s written)" % result_file):
         finish()
-    with open(result_file) as f:
-        result = json.load(f)
     print("script result: " + json.dumps(result, indent=1))
     check(args.plugin_name in result.get("loaded_plugins", []),
           "--plugins loaded %s (loaded: %s)" % (args.plugin_name, result.get("loaded_plugins")))
@@ -158,6 +115,18 @@ def main():
               % result["spectrum_views"])
         check(result["executions_after_samples"] == {"sampler": 1, "spectrum": 0},
               "showing the samples executed %r" % result["executions_after_samples"])
+        check(result["chart_ranges"] == [[1, 0.0, 0.5], [1, 0.01, 10.0], [1, -10.0, 10.0]],
+              "the spectrum chart's axes have fixed ranges: frequency [0, 0.5], power [0.01, 10], "
+              "anisotropy [-10, 10] dB (%r)" % result["chart_ranges"])
+        for run in result["chart_runs"]:
+            rows, power = run["produced"]
+            for key in ("chart", "second_chart"):
+                check(run[key] == [rows, power],
+                      "Number Of Points %d: the %s shows what the spectrum made (%d rows%s; "
+                      "shows %r)" % (run["points"], key.replace("_", " "), rows,
+                                     ", an error: cleared" if rows == 0 else "", run[key]))
+            check((rows == 0) == (run["points"] == 0), "Number Of Points %d: %d spectrum rows"
+                  % (run["points"], rows))
         check(result["executions"] == {"sampler": 1, "spectrum": 1},
               "samples, then spectrum, then a display change: executions %r (1 each)"
               % result["executions"])

@@ -114,6 +114,44 @@ try:
     layout_shot = os.path.join(OUT, "paraview-gui.png")
     SaveScreenshot(layout_shot, GetLayout(view), ImageResolution=[1280, 480])
     result["layout_screenshot"] = layout_shot
+
+    # Chart reading: fixed axis ranges, the same after every run.
+    result["chart_ranges"] = [
+        [getattr(chart, axis + "AxisUseCustomRange"), getattr(chart, axis + "AxisRangeMinimum"),
+         getattr(chart, axis + "AxisRangeMaximum")] for axis in ("Bottom", "Left", "Right")]
+
+    # What each chart shows (the table its representation was delivered) against the
+    # spectrum's own output, through a bad run and good runs, in two chart views.
+    def shown(chart_view):
+        """Rows and the first radial powers of the curve the view draws."""
+        drawn = chart_view.GetClientSideObject().GetChart()
+        for i in range(drawn.GetNumberOfPlots()):
+            plot = drawn.GetPlot(i)
+            table = plot.GetInput()
+            if plot.GetLabel() != "Radial power" or not plot.GetVisible() or table is None:
+                continue
+            column = table.GetColumnByName("RadialPower")
+            rows = table.GetNumberOfRows()
+            return rows, [column.GetValue(j) for j in range(1, 4)] if rows and column else []
+        return 0, []
+
+    def produced():
+        table = servermanager.Fetch(spectrum)
+        power = table.GetColumnByName("RadialPower") if table.GetNumberOfRows() else None
+        return table.GetNumberOfRows(), [power.GetValue(i) for i in range(1, 4)] if power else []
+
+    second = CreateView("BlueNoiseSpectrumView")
+    AssignViewToLayout(second, GetLayout(view), 0)
+    second_display = Show(spectrum, second)
+    runs = []
+    result["expected_messages"] = ["has no points", "NumberOfPoints 0"]
+    for points in (0, 7000, 0, 9000):
+        sampler.NumberOfPoints = points
+        Render(chart)
+        Render(second)
+        runs.append({"points": points, "produced": produced(), "chart": shown(chart),
+                     "second_chart": shown(second)})
+    result["chart_runs"] = runs
     result["finished"] = True
 except Exception:
     result["error"] = result.get("error", "") + traceback.format_exc()

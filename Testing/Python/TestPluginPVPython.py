@@ -167,7 +167,7 @@ def run_wavelet():
     check(mask_array is not None and int(vtk_to_numpy(mask_array).sum()) == n,
           "SampleMask counts the %d points" % n)
 
-    sp = BlueNoiseSpectrum(Input=s)
+    sp = BlueNoiseSpectrum(Input=s, GenerateSpectrumImage=1)
     sp.UpdatePipeline()
     check_spectrum(sp, n, rt.size, (41, 41, 41), "Wavelet")
     power = points_of(sp, 1)

@@ -130,6 +130,9 @@ GUI_DEFAULTS = {
     # The GUI shows the points: on the voxel lattice they read as lines in
     # perspective. VTK pipelines keep the lattice unless asked.
     ("ErrorDiffusionSampler", "Jitter"): 1,
+    # The 3D spectrum doubles the filter's memory and the GUI does not show it:
+    # made when asked for. VTK pipelines that slice it keep getting it.
+    ("BlueNoiseSpectrum", "GenerateSpectrumImage"): 0,
 }
 
 

@@ -148,7 +148,7 @@ def main():
     LoadPlugin(plugin, remote=False, ns=globals())
     wavelet = Wavelet(WholeExtent=WHOLE)
     sampler = ErrorDiffusionSampler(Input=wavelet, DensityScale=0.3, GenerateMask=1)  # noqa: F821
-    proxy = BlueNoiseSpectrum(Input=sampler)  # noqa: F821 (from the plugin)
+    proxy = BlueNoiseSpectrum(Input=sampler, GenerateSpectrumImage=1)  # noqa: F821 (the plugin)
     mask_proxy = BlueNoiseSpectrum(Input=OutputPort(sampler, 1))  # noqa: F821
     spectrum = proxy.GetClientSideObject()
     executions = [0]
