@@ -4,5 +4,6 @@
 
 vtkErrorDiffusionSampler: vtkImageData in, blue-noise sample points (vtkPolyData) out.
 vtkBlueNoiseSpectrum: points or image in, radially averaged power spectrum and metrics out.
+vtkBlueNoiseNIfTIReader: a NIfTI file (.nii, .nii.gz) in, vtkImageData in its sform or qform world frame out.
 """
 from .vtkFiltersBlueNoise import *  # noqa: F401,F403

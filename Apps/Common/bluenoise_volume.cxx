@@ -7,14 +7,13 @@
 #include "bluenoise_volume_headers.h"
 #include "bluenoise_xml_reader.h"
 
+#include "vtkBlueNoiseNIfTIReader.h"
+#include "vtkBlueNoiseVolumeFileCheck.h"
 #include "vtkImageData.h"
 #include "vtkInformation.h"
 #include "vtkStreamingDemandDrivenPipeline.h"
 #include "vtkMatrix3x3.h"
-#include "vtkMatrix4x4.h"
 #include "vtkMetaImageReader.h"
-#include "vtkNIFTIImageHeader.h"
-#include "vtkNIFTIImageReader.h"
 #include "vtkNew.h"
 #include "vtkNrrdReader.h"
 #include "vtkPointData.h"
@@ -62,7 +61,7 @@ vtkSmartPointer<vtkAlgorithm> NewRawReader(const Volume& volume)
   return r;
 }
 
-vtkSmartPointer<vtkAlgorithm> NewReader(const std::string& path)
+vtkSmartPointer<vtkAlgorithm> NewReader(const std::string& path, const VolumeOptions& options)
 {
   vtkSmartPointer<vtkAlgorithm> reader;
   if (EndsWith(path, ".vti"))
@@ -73,8 +72,10 @@ vtkSmartPointer<vtkAlgorithm> NewReader(const std::string& path)
   }
   else if (EndsWith(path, ".nii") || EndsWith(path, ".nii.gz") || EndsWith(path, ".hdr"))
   {
-    auto r = vtkSmartPointer<vtkNIFTIImageReader>::New();
+    // The module's reader: the same checks, and the sform / qform world frame.
+    auto r = vtkSmartPointer<vtkBlueNoiseNIfTIReader>::New();
     r->SetFileName(path.c_str());
+    r->SetVoxelSpace(options.VoxelSpace);
     reader = r;
   }
   else if (EndsWith(path, ".nrrd") || EndsWith(path, ".nhdr"))
@@ -90,6 +91,16 @@ vtkSmartPointer<vtkAlgorithm> NewReader(const std::string& path)
     reader = r;
   }
   return reader;
+}
+
+// A message of the module's NIfTI reader without the file name it starts
+// with (the callers name the file themselves); others as they are.
+std::string WithoutFileName(vtkAlgorithm* reader, const std::string& message)
+{
+  auto nifti = vtkBlueNoiseNIfTIReader::SafeDownCast(reader);
+  const std::string name = nifti && nifti->GetFileName() ? nifti->GetFileName() + std::string(": ") : "";
+  return !name.empty() && message.compare(0, name.size(), name) == 0 ? message.substr(name.size())
+                                                                     : message;
 }
 
 // Runs the reader on `extent` (or its whole extent), catching its errors and
@@ -116,67 +127,10 @@ bool RunReader(vtkAlgorithm* reader, const int* extent, std::string& error)
   }
   if (failure.empty() && !messages.Errors.empty())
   {
-    failure = messages.Errors.front();
+    failure = WithoutFileName(reader, messages.Errors.front());
   }
   error = failure;
   return failure.empty();
-}
-
-// The NIfTI world frame (sform, else qform) as the image's origin, spacing
-// and direction: world = M (origin + D diag(spacing) ijk) with M the 4x4
-// matrix, so the new direction columns are those of M D diag(spacing)
-// normalized, and their lengths the new spacing.
-std::string ApplyNIfTIFrame(vtkNIFTIImageReader* reader, vtkImageData* image, bool voxelSpace)
-{
-  vtkNIFTIImageHeader* header = reader->GetNIFTIHeader();
-  vtkMatrix4x4* m = nullptr;
-  std::string frame = "voxel";
-  if (voxelSpace)
-  {
-    return frame;
-  }
-  if (header && header->GetSFormCode() > 0 && reader->GetSFormMatrix())
-  {
-    m = reader->GetSFormMatrix();
-    frame = "sform";
-  }
-  else if (header && header->GetQFormCode() > 0 && reader->GetQFormMatrix())
-  {
-    m = reader->GetQFormMatrix();
-    frame = "qform";
-  }
-  if (!m)
-  {
-    return frame;
-  }
-  double origin[3], spacing[3], world[4];
-  image->GetOrigin(origin);
-  image->GetSpacing(spacing);
-  const double* d = image->GetDirectionMatrix()->GetData();
-  double point[4] = { origin[0], origin[1], origin[2], 1.0 };
-  m->MultiplyPoint(point, world);
-  double direction[9];
-  for (int j = 0; j < 3; ++j)
-  {
-    double column[3] = { 0, 0, 0 };
-    for (int i = 0; i < 3; ++i)
-    {
-      for (int k = 0; k < 3; ++k)
-      {
-        column[i] += m->GetElement(i, k) * d[3 * k + j] * spacing[j];
-      }
-    }
-    const double length = std::sqrt(column[0] * column[0] + column[1] * column[1] + column[2] * column[2]);
-    for (int i = 0; i < 3; ++i)
-    {
-      direction[3 * i + j] = length > 0.0 ? column[i] / length : (i == j ? 1.0 : 0.0);
-    }
-    spacing[j] = length > 0.0 ? length : spacing[j];
-  }
-  image->SetOrigin(world);
-  image->SetSpacing(spacing);
-  image->SetDirectionMatrix(direction);
-  return frame;
 }
 
 // The reader's whole extent is the one the header check vouched for (slabs
@@ -191,6 +145,17 @@ bool SameExtent(vtkAlgorithm* reader, const Volume& volume, std::string& error)
   if (info->Has(vtkStreamingDemandDrivenPipeline::WHOLE_EXTENT()))
   {
     info->Get(vtkStreamingDemandDrivenPipeline::WHOLE_EXTENT(), extent);
+  }
+  if (vtkBlueNoiseNIfTIReader::SafeDownCast(reader) && !messages.Errors.empty())
+  {
+    // It says why it refuses the file (an extent left empty); a matrix that is
+    // not finite is the one case the program's own option gets round.
+    error = WithoutFileName(reader, messages.Errors.front());
+    if (error.find("not finite") != std::string::npos)
+    {
+      error += "; --voxel-space reads the file in voxel space";
+    }
+    return false;
   }
   if (!std::equal(extent, extent + 6, volume.WholeExtent))
   {
@@ -273,7 +238,7 @@ bool CheckVolumeFile(const std::string& path, Volume& volume, std::string& error
   volume.Path = path;
   bool& streamable = volume.StreamableFile;
   bool ok = false;
-  if (headers::FileSize(path) < 0)
+  if (vtkBlueNoiseVolumeFileCheck::FileSize(path) < 0)
   {
     error = path + ": " + std::strerror(errno);
     return false;
@@ -311,7 +276,7 @@ bool ReadVolume(const VolumeOptions& options, Volume& volume, std::string& error
 {
   const std::string& path = volume.Path;
   const bool streamable = volume.StreamableFile;
-  auto reader = streamable && volume.Format == "MetaImage" ? NewRawReader(volume) : NewReader(path);
+  auto reader = streamable && volume.Format == "MetaImage" ? NewRawReader(volume) : NewReader(path, options);
   if (!reader)
   {
     error = path + ": unknown volume format (expected " + std::string(VolumeSuffixes()) + ")";
@@ -350,9 +315,9 @@ bool ReadVolume(const VolumeOptions& options, Volume& volume, std::string& error
   }
   volume.Image = vtkSmartPointer<vtkImageData>::New();
   volume.Image->ShallowCopy(image);
-  if (auto nifti = vtkNIFTIImageReader::SafeDownCast(reader))
+  if (auto nifti = vtkBlueNoiseNIfTIReader::SafeDownCast(reader))
   {
-    volume.Frame = ApplyNIfTIFrame(nifti, volume.Image, options.VoxelSpace);
+    volume.Frame = nifti->GetFrame();
   }
   if (!CheckGeometry(volume.Image, volume.Frame, error))
   {

@@ -27,7 +27,8 @@
 // (vtkErrorDiffusionSampler::SetNumberOfSlabs). NIfTI, compressed and ASCII
 // files are read whole.
 //
-// World frame: NIfTI volumes are placed in the file's world frame (the sform
+// World frame: NIfTI volumes are read by the module's vtkBlueNoiseNIfTIReader
+// (its checks, then VTK's vtkNIFTIImageReader), in the file's world frame (the sform
 // when its code is set, else the qform; millimetres) through the image's
 // origin, spacing and direction, unless VoxelSpace is asked for; other
 // formats keep the origin and spacing their readers give.

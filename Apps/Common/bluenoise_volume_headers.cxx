@@ -5,7 +5,8 @@
 #include "bluenoise_options.h"
 #include "bluenoise_volume.h"
 
-#include <zlib.h>
+#include "vtkBlueNoiseNIfTIReader.h"
+#include "vtkBlueNoiseVolumeFileCheck.h"
 #include "vtkType.h"
 #include "vtksys/SystemTools.hxx"
 
@@ -18,7 +19,6 @@
 #include <fstream>
 #include <map>
 #include <sstream>
-#include <sys/stat.h>
 #include <vector>
 
 namespace bluenoise
@@ -27,10 +27,6 @@ namespace headers
 {
 namespace
 {
-// zlib's largest compression ratio (deflate's limit is 1032:1): compressed
-// data of n bytes never holds more than this many times n.
-const double MaximumCompressionRatio = 1032.0;
-
 std::string Lower(const std::string& s)
 {
   return vtksys::SystemTools::LowerCase(s);
@@ -57,124 +53,38 @@ std::vector<std::string> Words(const std::string& s)
 
 std::string Number(double v)
 {
-  std::ostringstream s;
-  s.precision(15);
-  s << v;
-  return s.str();
+  return vtkBlueNoiseVolumeFileCheck::Number(v);
 }
 
-// The dimensions, spacing and data size every format declares, checked the
-// same way: positive whole dimensions, finite positive spacing, and the data
-// present in the file (at least `needed` bytes, or for compressed data
-// enough bytes to decompress to them).
-struct Declared
-{
-  double Dimensions[3] = { 1, 1, 1 };
-  double Spacing[3] = { 1, 1, 1 };
-  double Components = 1;
-  double BytesPerValue = 1;
-  double Available = 0;
-  bool Compressed = false;
-};
+using Declared = vtkBlueNoiseVolumeFileCheck::Declared;
 
+// The module's check of what a header declares, its result in `volume`.
 bool CheckDeclared(const Declared& d, Volume& volume, std::string& error)
 {
-  static const char* const axis[3] = { "x", "y", "z" };
-  double voxels = 1.0;
-  for (int i = 0; i < 3; ++i)
+  vtkBlueNoiseVolumeFileCheck::Checked checked;
+  if (!vtkBlueNoiseVolumeFileCheck::CheckDeclared(d, checked, error))
   {
-    if (!(d.Dimensions[i] >= 1.0) || d.Dimensions[i] != std::floor(d.Dimensions[i]) ||
-      d.Dimensions[i] > 2147483647.0)
-    {
-      error = std::string("dimension ") + axis[i] + " is " + Number(d.Dimensions[i]) +
-        " (must be a whole number >= 1)";
-      return false;
-    }
-    if (!std::isfinite(d.Spacing[i]) || !(d.Spacing[i] > 0.0))
-    {
-      error = std::string("spacing ") + axis[i] + " is " + Number(d.Spacing[i]) +
-        " (must be finite and > 0)";
-      return false;
-    }
-    voxels *= d.Dimensions[i];
-  }
-  if (!(d.Components >= 1.0 && d.Components <= 4096.0))
-  {
-    error = "the number of components is " + Number(d.Components);
     return false;
   }
-  const double needed = voxels * d.Components * d.BytesPerValue;
-  const double holds = d.Available * (d.Compressed ? MaximumCompressionRatio : 1.0);
-  if (!(needed <= holds))
-  {
-    error = "the header declares " + Number(d.Dimensions[0]) + " x " + Number(d.Dimensions[1]) +
-      " x " + Number(d.Dimensions[2]) + " voxels (" + Number(needed) + " bytes of data) but " +
-      (d.Compressed ? "the compressed data has only " : "the data has only ") +
-      Number(d.Available) + " bytes";
-    return false;
-  }
-  if (voxels > 9.0e18)
-  {
-    error = "too many voxels: " + Number(voxels);
-    return false;
-  }
-  for (int i = 0; i < 3; ++i)
-  {
-    volume.WholeExtent[2 * i] = 0;
-    volume.WholeExtent[2 * i + 1] = static_cast<int>(d.Dimensions[i]) - 1;
-  }
-  volume.Voxels = static_cast<vtkIdType>(voxels);
-  volume.BytesPerVoxel = d.Components * d.BytesPerValue;
+  std::copy(checked.WholeExtent, checked.WholeExtent + 6, volume.WholeExtent);
+  volume.Voxels = checked.Voxels;
+  volume.BytesPerVoxel = checked.BytesPerVoxel;
   return true;
 }
 
 bool DataFileSize(const std::string& path, double offset, double& available, std::string& error)
 {
-  const long long size = FileSize(path);
-  if (size < 0)
-  {
-    error = "cannot open the data file " + path + ": " + std::strerror(errno);
-    return false;
-  }
-  if (offset > static_cast<double>(size))
-  {
-    error = "the data starts at byte " + Number(offset) + ", beyond the end of " + path + " (" +
-      std::to_string(size) + " bytes)";
-    return false;
-  }
-  available = static_cast<double>(size) - offset;
-  return true;
+  return vtkBlueNoiseVolumeFileCheck::DataFileSize(path, offset, available, error);
 }
 
-// Bytes a gzip file decompresses to, reading no further than `limit`.
-bool GunzippedSize(const std::string& path, double limit, double& size, std::string& error)
+long long FileSize(const std::string& path)
 {
-  gzFile file = gzopen(path.c_str(), "rb");
-  if (!file)
-  {
-    error = std::string("cannot open: ") + std::strerror(errno);
-    return false;
-  }
-  std::vector<char> buffer(1 << 20);
-  size = 0.0;
-  while (size < limit)
-  {
-    const int n = gzread(file, buffer.data(), static_cast<unsigned>(buffer.size()));
-    if (n < 0)
-    {
-      int code = 0;
-      error = std::string("corrupt gzip data: ") + gzerror(file, &code);
-      gzclose(file);
-      return false;
-    }
-    if (n == 0)
-    {
-      break;
-    }
-    size += n;
-  }
-  gzclose(file);
-  return true;
+  return vtkBlueNoiseVolumeFileCheck::FileSize(path);
+}
+
+bool ReadHead(const std::string& path, size_t limit, bool gzipped, std::string& head, std::string& error)
+{
+  return vtkBlueNoiseVolumeFileCheck::ReadHead(path, limit, gzipped, head, error);
 }
 
 std::string Directory(const std::string& path)
@@ -197,299 +107,20 @@ struct TextHeader
 };
 }
 
-long long FileSize(const std::string& path)
-{
-  struct stat info;
-  if (stat(path.c_str(), &info) != 0)
-  {
-    return -1;
-  }
-  if (!S_ISREG(info.st_mode))
-  {
-    errno = EISDIR;
-    return -1;
-  }
-  return static_cast<long long>(info.st_size);
-}
-
-bool ReadHead(const std::string& path, size_t limit, bool gzipped, std::string& head, std::string& error)
-{
-  head.assign(limit, '\0');
-  if (gzipped)
-  {
-    gzFile file = gzopen(path.c_str(), "rb");
-    if (!file)
-    {
-      error = std::string("cannot open: ") + std::strerror(errno);
-      return false;
-    }
-    const int n = gzread(file, &head[0], static_cast<unsigned>(limit));
-    gzclose(file);
-    if (n < 0)
-    {
-      error = "corrupt gzip data";
-      return false;
-    }
-    head.resize(static_cast<size_t>(n));
-    return true;
-  }
-  std::ifstream in(path, std::ios::binary);
-  if (!in)
-  {
-    error = std::string("cannot open: ") + std::strerror(errno);
-    return false;
-  }
-  in.read(&head[0], static_cast<std::streamsize>(limit));
-  head.resize(static_cast<size_t>(in.gcount()));
-  return true;
-}
-
 //------------------------------------------------------------------------------
-// NIfTI-1 / NIfTI-2 / Analyze 7.5: the binary header's fields, either byte order,
-// read the way VTK's vtkNIFTIImageReader reads them (the version from the magic,
-// the data file from the suffix), so that what is checked is what it will trust.
-namespace
-{
-struct NIfTIHeader
-{
-  double Dim[8] = { 0 };
-  double PixDim[8] = { 0 };
-  double VoxOffset = 0;
-  double BitPix = 0;
-  int DataType = 0;
-  double DataTypeBytes = 0; // bytes per voxel of the datatype code (0: unknown code)
-  size_t HeaderSize = 348;
-};
-
-template <typename T>
-T Field(const std::string& h, size_t at, bool swap)
-{
-  T v;
-  char bytes[sizeof(T)];
-  std::memcpy(bytes, h.data() + at, sizeof(T));
-  if (swap)
-  {
-    std::reverse(bytes, bytes + sizeof(T));
-  }
-  std::memcpy(&v, bytes, sizeof(T));
-  return v;
-}
-
-// Bytes per voxel of the datatype codes vtkNIFTIImageReader maps to a VTK
-// type (DT_UINT8 = 2, ..., DT_RGBA32 = 2304); 0 for any other code. VTK 9.2's
-// RequestInformation looks the code up in its table without a bound, so an
-// unknown code reads past the table's end and crashes (found by the volume-
-// loader fuzzer): NIfTI's own DT_BINARY, DT_FLOAT128 and DT_COMPLEX256 included.
-double NIfTITypeBytes(int code)
-{
-  static const std::map<int, double> bytes = { { 2, 1 }, { 4, 2 }, { 8, 4 }, { 16, 4 },
-    { 32, 8 }, { 64, 8 }, { 128, 3 }, { 256, 1 }, { 512, 2 }, { 768, 4 }, { 1024, 8 },
-    { 1280, 8 }, { 1792, 16 }, { 2304, 4 } };
-  const auto it = bytes.find(code);
-  return it == bytes.end() ? 0.0 : it->second;
-}
-
-// The version vtkNIFTIImageReader reads the header as: it looks at the magic
-// (NIfTI-2's at byte 4 first, then NIfTI-1's at byte 344), not at sizeof_hdr;
-// 0 without a magic (Analyze 7.5), -1 for a NIfTI-2 magic it would misread
-// (versions 3 to 9, or the line-ending bytes damaged).
-int NIfTIVersion(const std::string& h)
-{
-  if (h[4] == 'n' && (h[5] == '+' || h[5] == 'i') && h[6] >= '2' && h[6] <= '9' && h[7] == '\0')
-  {
-    return h[6] == '2' && h.compare(8, 4, "\r\n\032\n") == 0 ? 2 : -1;
-  }
-  if (h[344] == 'n' && (h[345] == '+' || h[345] == 'i') && h[346] == '1' && h[347] == '\0')
-  {
-    return 1;
-  }
-  return 0;
-}
-
-// sizeof_hdr must be the size the magic implies, in either byte order; the
-// byte order found here is the data's. (VTK takes the byte order from dim[0]
-// instead; both agree whenever dim[0] passes its check below.)
-bool NIfTIHeaderSize(const std::string& h, int version, bool& swap, std::string& error)
-{
-  const int32_t size = Field<int32_t>(h, 0, false);
-  const int32_t swapped = Field<int32_t>(h, 0, true);
-  const int32_t expected = version == 2 ? 540 : 348;
-  const int32_t other = version == 2 ? 348 : 540;
-  swap = size != expected && swapped == expected;
-  if (size == expected || swap)
-  {
-    return true;
-  }
-  if (size == other || swapped == other)
-  {
-    error = "sizeof_hdr is " + std::to_string(other) + " but " +
-      (version == 2 ? "the magic says NIfTI-2 (540)"
-        : version == 1 ? "the magic says NIfTI-1 (348)"
-                       : "without a NIfTI magic it is an Analyze 7.5 header (348)");
-  }
-  else
-  {
-    error = "not a NIfTI header (sizeof_hdr is " + std::to_string(size) + ")";
-  }
-  return false;
-}
-
-bool NIfTIFields(const std::string& h, bool two, bool swap, NIfTIHeader& n, std::string& error)
-{
-  n.HeaderSize = two ? 540 : 348;
-  for (int i = 0; i < 8; ++i)
-  {
-    n.Dim[i] = two ? static_cast<double>(Field<int64_t>(h, 16 + 8 * i, swap))
-                   : Field<int16_t>(h, 40 + 2 * i, swap);
-    n.PixDim[i] = two ? Field<double>(h, 104 + 8 * i, swap) : Field<float>(h, 76 + 4 * i, swap);
-  }
-  n.BitPix = two ? Field<int16_t>(h, 14, swap) : Field<int16_t>(h, 72, swap);
-  n.DataType = two ? Field<int16_t>(h, 12, swap) : Field<int16_t>(h, 70, swap);
-  n.DataTypeBytes = NIfTITypeBytes(n.DataType);
-  n.VoxOffset = two ? static_cast<double>(Field<int64_t>(h, 168, swap)) : Field<float>(h, 108, swap);
-  if (!(n.Dim[0] >= 1 && n.Dim[0] <= 7))
-  {
-    error = "dim[0] (the number of dimensions) is " + Number(n.Dim[0]) + ", not in [1, 7]";
-    return false;
-  }
-  if (n.DataTypeBytes == 0.0)
-  {
-    error = "datatype " + std::to_string(n.DataType) +
-      " is not one VTK's NIfTI reader reads (integers of 8 to 64 bits, float32, float64, "
-      "complex64, complex128, RGB24, RGBA32)";
-    return false;
-  }
-  if (!(n.BitPix >= 8) || std::fmod(n.BitPix, 8.0) != 0.0)
-  {
-    error = "bitpix is " + Number(n.BitPix) + " (a multiple of 8 is needed)";
-    return false;
-  }
-  return true;
-}
-
-bool ParseNIfTI(const std::string& h, bool singleFile, NIfTIHeader& n, std::string& error)
-{
-  if (h.size() < 348)
-  {
-    error = "the file is shorter than a NIfTI header (" + std::to_string(h.size()) + " bytes)";
-    return false;
-  }
-  const int version = NIfTIVersion(h);
-  if (version < 0)
-  {
-    error = "the magic at byte 4 names a NIfTI version other than 1 and 2, or its "
-            "line-ending bytes are damaged";
-    return false;
-  }
-  bool swap = false;
-  if (!NIfTIHeaderSize(h, version, swap, error))
-  {
-    return false;
-  }
-  if (version == 2 && h.size() < 540)
-  {
-    error = "the file is shorter than a NIfTI-2 header";
-    return false;
-  }
-  if (!NIfTIFields(h, version == 2, swap, n, error))
-  {
-    return false;
-  }
-  // In a .nii the data follow the header; a .hdr's are in its .img.
-  if (!std::isfinite(n.VoxOffset) || n.VoxOffset < (singleFile ? n.HeaderSize : 0))
-  {
-    error = "vox_offset is " + Number(n.VoxOffset);
-    return false;
-  }
-  return true;
-}
-
-// The .img of a .hdr where vtkNIFTIImageReader looks for it: the same
-// compression first (x.hdr: x.img, else x.img.gz; x.hdr.gz: x.img.gz, else
-// x.img), in the case of the header's suffix.
-std::string NIfTIImageFile(const std::string& path, bool gzipped)
-{
-  const size_t m = path.size() - (gzipped ? 3 : 0);
-  const bool upper = std::isupper(static_cast<unsigned char>(path[m - 3])) != 0;
-  const std::string first = path.substr(0, m - 3) + (upper ? "IMG" : "img") + path.substr(m);
-  const std::string second = gzipped ? first.substr(0, m) : first + (upper ? ".GZ" : ".gz");
-  return FileSize(first) >= 0 ? first : second;
-}
-}
-
+// NIfTI: the module's reader checks its files itself (vtkBlueNoiseNIfTIReader::CheckFile).
 bool CheckNIfTI(const std::string& path, Volume& volume, std::string& error)
 {
-  const bool gzipped = Lower(path).size() > 3 && Lower(path).substr(path.size() - 3) == ".gz";
-  const std::string bare = Lower(path).substr(0, path.size() - (gzipped ? 3 : 0));
-  const bool singleFile = bare.size() < 4 || bare.substr(bare.size() - 4) != ".hdr";
-  std::string head;
-  NIfTIHeader n;
-  if (!ReadHead(path, 540, gzipped, head, error) || !ParseNIfTI(head, singleFile, n, error))
-  {
-    return false;
-  }
-  Declared d;
-  const int rank = static_cast<int>(n.Dim[0]);
-  for (int i = 0; i < 3; ++i)
-  {
-    d.Dimensions[i] = i < rank ? n.Dim[i + 1] : 1.0;
-    // The reader's spacing is pixdim[1..3] whatever the rank, a 0 beyond the
-    // rank taken as 1.
-    d.Spacing[i] = i >= rank && n.PixDim[i + 1] == 0.0 ? 1.0 : n.PixDim[i + 1];
-  }
-  // Only the first time point is read; a fifth dimension holds components.
-  d.Components = rank >= 5 ? n.Dim[5] : 1.0;
-  if (rank >= 4 && !(n.Dim[4] >= 1.0))
-  {
-    error = "dimension t is " + Number(n.Dim[4]);
-    return false;
-  }
-  // VTK 9.2's reader steps through a row with int byte counts.
-  const double row = d.Dimensions[0] * d.Components * n.DataTypeBytes;
-  if (row > 2147483647.0)
-  {
-    error = "a row of the data is " + Number(row) +
-      " bytes, more than VTK's NIfTI reader reads (2^31 - 1)";
-    return false;
-  }
-  // The reader allocates by the datatype; a bitpix that says less is not trusted.
-  d.BytesPerValue = std::max(n.BitPix / 8.0, n.DataTypeBytes);
-  // The data: in the same file after vox_offset, or in the .img of a .hdr.
-  const std::string body = singleFile ? path : NIfTIImageFile(path, gzipped);
-  const bool bodyGzipped = Lower(body).substr(body.size() - 3) == ".gz";
-  if (bodyGzipped)
-  {
-    const double compressed = static_cast<double>(std::max(0LL, FileSize(body)));
-    const double needed = n.VoxOffset +
-      d.Dimensions[0] * d.Dimensions[1] * d.Dimensions[2] * d.Components * d.BytesPerValue;
-    // A header claiming more than the compressed bytes can hold fails at once.
-    double size = 0.0;
-    if (needed > compressed * MaximumCompressionRatio + n.VoxOffset)
-    {
-      d.Compressed = true;
-      d.Available = compressed;
-      volume.Format = "NIfTI";
-      return CheckDeclared(d, volume, error);
-    }
-    if (!GunzippedSize(body, needed, size, error))
-    {
-      error = body + ": " + error;
-      return false;
-    }
-    if (n.VoxOffset > size && size > 0.0)
-    {
-      error = "vox_offset " + Number(n.VoxOffset) + " lies beyond the end of the data (" +
-        Number(size) + " bytes decompressed)";
-      return false;
-    }
-    d.Available = std::max(0.0, size - n.VoxOffset);
-  }
-  else if (!DataFileSize(body, n.VoxOffset, d.Available, error))
+  vtkBlueNoiseVolumeFileCheck::Checked checked;
+  if (!vtkBlueNoiseNIfTIReader::CheckFile(path, checked, error))
   {
     return false;
   }
   volume.Format = "NIfTI";
-  return CheckDeclared(d, volume, error);
+  std::copy(checked.WholeExtent, checked.WholeExtent + 6, volume.WholeExtent);
+  volume.Voxels = checked.Voxels;
+  volume.BytesPerVoxel = checked.BytesPerVoxel;
+  return true;
 }
 
 //------------------------------------------------------------------------------
@@ -996,7 +627,7 @@ bool CheckVTI(const std::string& path, Volume& volume, bool& streamable, std::st
   }
   // Uncompressed, every value takes at least one byte of the file, and binary
   // values their size; compressed, the bytes are bounded by zlib's ratio.
-  const bool fits = d.Compressed ? bytes <= d.Available * MaximumCompressionRatio
+  const bool fits = d.Compressed ? bytes <= d.Available * vtkBlueNoiseVolumeFileCheck::MaximumCompressionRatio
                                  : values <= d.Available && (ascii || bytes <= d.Available);
   if (!fits)
   {

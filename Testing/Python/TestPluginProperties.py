@@ -2,7 +2,8 @@
 # SPDX-License-Identifier: BSD-3-Clause
 """Every property of the plugin's proxies reaches its VTK object.
 
-    pvpython TestPluginProperties.py --plugin BlueNoiseSampling.so --xml BlueNoiseSampling.xml
+    pvpython TestPluginProperties.py --plugin BlueNoiseSampling.so --xml BlueNoiseSampling.xml \
+        --xml BlueNoiseReaders.xml
 
 Needs the bluenoise Python package on PYTHONPATH (so that GetClientSideObject()
 returns the wrapped vtkErrorDiffusionSampler / vtkBlueNoiseSpectrum).
@@ -16,6 +17,8 @@ returns the wrapped vtkErrorDiffusionSampler / vtkBlueNoiseSpectrum).
    a boolean, values inside ranges, another array, a piecewise function proxy,
    a temporary parameter file), pushed with UpdateVTKObjects(), and read back
    with the VTK object's Get method. A property without a getter fails.
+   The readers (BlueNoiseNIfTIReader) too: documented, with a ReaderFactory
+   hint instead of a menu category, walked on a small NIfTI file.
 3. ParameterSet Custom with that parameter file actually samples with it.
 """
 import argparse
@@ -30,17 +33,18 @@ from vtkmodules.vtkCommonDataModel import vtkDataObject
 from vtkmodules.util.numpy_support import vtk_to_numpy
 
 from bluenoise_testing import check, finish
+from nifti_testing import write_nifti
 
 PROXIES = ("ErrorDiffusionSampler", "BlueNoiseSpectrum")
+READERS = ("BlueNoiseNIfTIReader",)
 VECTOR_TAGS = ("IntVectorProperty", "DoubleVectorProperty", "StringVectorProperty", "ProxyProperty")
 
 
 # ---------------------------------------------------------------------------
 # 1. The XML.
-def xml_proxies(path):
-    root = ET.parse(path).getroot()
+def xml_proxies(paths):
     proxies = {}
-    for group in root.iter("ProxyGroup"):
+    for group in (g for path in paths for g in ET.parse(path).getroot().iter("ProxyGroup")):
         for proxy in group:
             if proxy.tag.endswith("Proxy") and proxy.get("name"):
                 proxies[proxy.get("name")] = proxy
@@ -58,9 +62,9 @@ def doc_text(element):
     return " ".join(("".join(doc.itertext()) + " " + doc.get("short_help", "")).split())
 
 
-def check_xml(path):
-    proxies = xml_proxies(path)
-    for name in PROXIES:
+def check_xml(paths):
+    proxies = xml_proxies(paths)
+    for name in PROXIES + READERS:
         if not check(name in proxies, "XML defines proxy %s" % name):
             continue
         proxy = proxies[name]
@@ -72,6 +76,11 @@ def check_xml(path):
                 domains = [child.tag for child in prop if child.tag.endswith("Domain")]
                 check(bool(domains), "%s.%s (%s): has a domain %s" % (name, pname, prop.tag, domains))
         hints = proxy.find("Hints")
+        if name in READERS:
+            factory = hints.find("ReaderFactory") if hints is not None else None
+            check(factory is not None and factory.get("extensions") and factory.get("file_description"),
+                  "%s: a ReaderFactory hint with extensions and a file description" % name)
+            continue
         menu = hints.find("ShowInMenu") if hints is not None else None
         category = menu.get("category") if menu is not None else None
         check(category == "Sampling", "%s: ShowInMenu category %r == 'Sampling'" % (name, category))
@@ -109,6 +118,11 @@ def check_hints(proxies):
         menu = sm_hints.FindNestedElementByName("ShowInMenu") if sm_hints else None
         check(menu is not None and menu.GetAttribute("category") == "Sampling",
               "%s: loaded proxy hints ShowInMenu category Sampling" % name)
+    for name in READERS:
+        prototype = pxm.GetPrototypeProxy("sources", name)
+        sm_hints = prototype.GetHints() if prototype is not None else None
+        factory = sm_hints.FindNestedElementByName("ReaderFactory") if sm_hints else None
+        check(factory is not None, "%s: loaded as a source with its ReaderFactory hint" % name)
 
 
 def parse_default(prop):
@@ -307,7 +321,7 @@ class Walker:
 
         if cls == "vtkSMStringVectorProperty":
             if "vtkSMFileListDomain" in domains:
-                value = self.context["parameter_file"]
+                value = self.context["files"].get(self.name, self.context["parameter_file"])
             else:
                 value = "bluenoise test value"
             self.push_and_get(key, prop, value)
@@ -391,11 +405,11 @@ PARAMETER_TABLE = """# level A100 A-110 A010 A0-11 A-101 A001 m  (test table, no
 def main():
     parser = argparse.ArgumentParser()
     parser.add_argument("--plugin", required=True)
-    parser.add_argument("--xml", required=True)
+    parser.add_argument("--xml", required=True, action="append", help="each XML file of the plugin")
     args = parser.parse_args()
 
     try:
-        from bluenoise import vtkBlueNoiseSpectrum, vtkErrorDiffusionSampler
+        from bluenoise import vtkBlueNoiseNIfTIReader, vtkBlueNoiseSpectrum, vtkErrorDiffusionSampler
     except ImportError as error:
         check(False, "import bluenoise (PYTHONPATH must hold the package): %s" % error)
         finish()
@@ -406,7 +420,8 @@ def main():
     LoadPlugin(args.plugin, remote=False, ns=globals())
     check_hints(proxies)
     check_xml_defaults(proxies, {"ErrorDiffusionSampler": vtkErrorDiffusionSampler,
-                                 "BlueNoiseSpectrum": vtkBlueNoiseSpectrum})
+                                 "BlueNoiseSpectrum": vtkBlueNoiseSpectrum,
+                                 "BlueNoiseNIfTIReader": vtkBlueNoiseNIfTIReader})
 
     with tempfile.TemporaryDirectory(prefix="bluenoise-props-") as tmp:
         parameter_file = os.path.join(tmp, "custom parameters.txt")
@@ -420,13 +435,17 @@ def main():
         feeder2 = ErrorDiffusionSampler(Input=calc, NumberOfPoints=3000, Seed=3)
         feeder.UpdatePipeline()
         feeder2.UpdatePipeline()
-        context = {"parameter_file": parameter_file,
+        nifti_files = [write_nifti(os.path.join(tmp, name)) for name in ("a.nii.gz", "b.nii")]
+        context = {"parameter_file": parameter_file, "files": {"BlueNoiseNIfTIReader": nifti_files[1]},
                    "inputs": {"ErrorDiffusionSampler": [calc], "BlueNoiseSpectrum": [feeder, feeder2]}}
 
         sampler = ErrorDiffusionSampler(Input=calc)
         spectrum = BlueNoiseSpectrum(Input=feeder)
-        xml = {name: {p.get("name") for p in xml_properties(proxies[name])} for name in PROXIES if name in proxies}
-        for name, proxy in (("ErrorDiffusionSampler", sampler), ("BlueNoiseSpectrum", spectrum)):
+        reader = BlueNoiseNIfTIReader(FileName=nifti_files[0])
+        xml = {name: {p.get("name") for p in xml_properties(proxies[name])}
+               for name in PROXIES + READERS if name in proxies}
+        for name, proxy in (("ErrorDiffusionSampler", sampler), ("BlueNoiseSpectrum", spectrum),
+                            ("BlueNoiseNIfTIReader", reader)):
             seen = Walker(proxy, name, context).walk()
             print("%s: walked %d properties: %s" % (name, len(seen), ", ".join(seen)))
             check(set(seen) == xml.get(name, set()),
@@ -447,7 +466,7 @@ def main():
             pa = vtk_to_numpy(a.GetPoints().GetData())
             pb = vtk_to_numpy(b.GetPoints().GetData())
             check(pa.shape != pb.shape or not (pa == pb).all(), "Custom parameters give other points than Paper")
-        for proxy in (custom, paper, spectrum, sampler, feeder2, feeder, calc, wavelet):
+        for proxy in (reader, custom, paper, spectrum, sampler, feeder2, feeder, calc, wavelet):
             Delete(proxy)
     finish()
 
