@@ -411,7 +411,7 @@ void vtkErrorDiffusionSampler::PlanRun(const int whole[6], int piece, int pieces
   run.Steps.clear();
   run.Current = 0;
   vtkSamplingDensity probe;
-  probe.SetMapping(this->DensityMapping, this->Component, this->TransferFunction);
+  probe.SetMapping(this->ValueMapping(), this->Component, this->TransferFunction);
   if (this->UseCustomScalarRange)
   {
     probe.SetRange(this->ScalarRange[0], this->ScalarRange[1]);
@@ -440,6 +440,15 @@ bool vtkErrorDiffusionSampler::IsAborted()
 #else
   return this->GetAbortExecute() != 0;
 #endif
+}
+
+//------------------------------------------------------------------------------
+// The mapping vtkSamplingDensity applies: the colour map's opacity is a
+// transfer function.
+int vtkErrorDiffusionSampler::ValueMapping() const
+{
+  return this->DensityMapping == DENSITY_COLOR_MAP_OPACITY ? DENSITY_TRANSFER_FUNCTION
+                                                           : this->DensityMapping;
 }
 
 //------------------------------------------------------------------------------
@@ -560,9 +569,9 @@ bool vtkErrorDiffusionSampler::StartRun(vtkInformation*, vtkInformationVector**)
   }
   const bool function = this->TransferFunction && this->TransferFunction->GetSize() > 0;
   // A transfer-function mapping without a function ramps over the range.
-  const int mapping = (this->DensityMapping == DENSITY_TRANSFER_FUNCTION && !function)
+  const int mapping = (this->ValueMapping() == DENSITY_TRANSFER_FUNCTION && !function)
     ? DENSITY_SCALAR_RANGE
-    : this->DensityMapping;
+    : this->ValueMapping();
   run.Density.SetMapping(mapping, this->Component, this->TransferFunction);
   if (mapping == DENSITY_SCALAR_RANGE && this->UseCustomScalarRange)
   {

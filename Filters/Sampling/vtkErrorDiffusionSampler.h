@@ -125,7 +125,8 @@ public:
   {
     DENSITY_IDENTITY = vtkSamplingDensity::IDENTITY,
     DENSITY_SCALAR_RANGE = vtkSamplingDensity::SCALAR_RANGE,
-    DENSITY_TRANSFER_FUNCTION = vtkSamplingDensity::TRANSFER_FUNCTION
+    DENSITY_TRANSFER_FUNCTION = vtkSamplingDensity::TRANSFER_FUNCTION,
+    DENSITY_COLOR_MAP_OPACITY = 3
   };
 
   enum ParameterSets
@@ -178,9 +179,13 @@ public:
   ///@{
   /**
    * How array values become densities (see the class comment). Default
-   * DENSITY_SCALAR_RANGE.
+   * DENSITY_SCALAR_RANGE. DENSITY_COLOR_MAP_OPACITY maps as
+   * DENSITY_TRANSFER_FUNCTION; it says where the function comes from: the
+   * application keeps TransferFunction the opacity function of the colour map
+   * the array is rendered with (ParaView's proxy does, so that a user samples
+   * where they see and re-samples as they edit the colour map).
    */
-  vtkSetClampMacro(DensityMapping, int, DENSITY_IDENTITY, DENSITY_TRANSFER_FUNCTION);
+  vtkSetClampMacro(DensityMapping, int, DENSITY_IDENTITY, DENSITY_COLOR_MAP_OPACITY);
   vtkGetMacro(DensityMapping, int);
   void SetDensityMappingToIdentity() { this->SetDensityMapping(DENSITY_IDENTITY); }
   void SetDensityMappingToScalarRange() { this->SetDensityMapping(DENSITY_SCALAR_RANGE); }
@@ -188,6 +193,7 @@ public:
   {
     this->SetDensityMapping(DENSITY_TRANSFER_FUNCTION);
   }
+  void SetDensityMappingToColorMapOpacity() { this->SetDensityMapping(DENSITY_COLOR_MAP_OPACITY); }
   ///@}
 
   ///@{
@@ -406,6 +412,7 @@ private:
 
   bool IsAborted();
   bool SamplesCells();
+  int ValueMapping() const;
   bool ValidateProperties();
   void PlanRun(const int whole[6], int piece, int pieces);
   bool StartRun(vtkInformation* outInfo, vtkInformationVector** inputVector);

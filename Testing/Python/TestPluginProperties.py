@@ -311,6 +311,10 @@ class Walker:
         domains = {d.GetClassName(): d for d in domains_of(prop)}
 
         if cls == "vtkSMProxyProperty":
+            # With Density Mapping = Color Map Opacity (the walk may have left it there) the
+            # proxy sets the function itself (TestPluginColorMapOpacity): set one here.
+            if self.proxy.GetProperty("DensityMapping") is not None:
+                self.proxy.SetPropertyWithName("DensityMapping", "Transfer Function")
             pf = CreatePiecewiseFunction(Points=[0.0, 0.0, 0.5, 0.0, 100.0, 0.25, 0.5, 0.0, 250.0, 1.0, 0.5, 0.0])
             self.push_and_get(key, prop, pf)
             got = get()
