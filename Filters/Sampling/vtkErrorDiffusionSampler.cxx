@@ -804,11 +804,25 @@ bool vtkErrorDiffusionSampler::SampleWhole(vtkImageData* input, vtkDataArray* ar
                                                                               << " voxels).");
     return false;
   }
+  // Progress over what is left of the run: the densities mapped (a share as
+  // for the statistics), the kernel's own reports, then the points built.
+  const double base = run.ProgressDone;
+  const double width = std::max(run.ProgressTotal - base, 0.0);
+  const double filled = 0.05, sampled = 0.95;
+  const auto report = [&](double fraction) {
+    run.ProgressDone = base + width * fraction;
+    this->UpdateProgress(run.ProgressDone / run.ProgressTotal);
+    return !this->IsAborted();
+  };
   for (int z = run.Sampled[4]; z <= run.Sampled[5]; ++z)
   {
     const vtkIdType begin = (z - extent[4]) * layer;
     const vtkIdType k = z - run.Sampled[4];
     run.LayerSums[k] = run.Density.Fill(array, begin, begin + layer, ghosts, density.data() + k * layer);
+  }
+  if (!report(filled))
+  {
+    return false;
   }
   std::unique_ptr<vtkVoxelPointSetKernel> kernel;
   if (this->Method == METHOD_POISSON_DISK)
@@ -820,10 +834,21 @@ bool vtkErrorDiffusionSampler::SampleWhole(vtkImageData* input, vtkDataArray* ar
     kernel.reset(new vtkWeightedSampleEliminationKernel);
   }
   kernel->SetSeed(static_cast<std::uint64_t>(this->Seed));
+  // The kernel reports every so many voxels or candidates it visits; an
+  // abort stops it there, and the filter leaves an empty output.
+  kernel->SetProgressCallback(
+    [&](double fraction) { return report(filled + (sampled - filled) * fraction); });
   std::string error;
   if (kernel->Sample(run.NX(), run.NY(), run.SampledLayers(), density.data(), mask.data(), &error) < 0)
   {
-    vtkErrorMacro("Sampling failed: " << error);
+    if (!kernel->GetAborted())
+    {
+      vtkErrorMacro("Sampling failed: " << error);
+    }
+    return false;
+  }
+  if (!report(sampled))
+  {
     return false;
   }
   for (vtkIdType k = 0; k < run.SampledLayers(); ++k)

@@ -79,8 +79,10 @@
  * whichever of the two has time (UseWorkerThread, when more than one thread
  * is allowed);
  * the pass over the values that a point budget or an unset scalar range needs
- * before the scan runs on as many threads as are allowed. Progress is reported per layer; abort is honored between
- * layers and leaves an empty output.
+ * before the scan runs on as many threads as are allowed. Progress is reported per layer (for
+ * METHOD_POISSON_DISK and METHOD_SAMPLE_ELIMINATION every so many voxels or
+ * candidates the kernel visits); abort is honored between layers (there, at
+ * the kernel's reports) and leaves an empty output.
  *
  * Bad input (no array, non-numeric or cell-data array, component out of range,
  * empty extent, non-finite DensityScale or ModulationScale, an unreadable or
