@@ -909,6 +909,7 @@ void vtkErrorDiffusionSampler::FinishOutput(
     run.Points->SetVerts(run.Assembler.MakeVertices(run.Points->GetNumberOfPoints()));
   }
   output->ShallowCopy(run.Points);
+  this->WarnIfEmpty(output->GetNumberOfPoints(), expected);
 
   vtkFieldData* fd = output->GetFieldData();
   const double* origin = input->GetOrigin();
@@ -944,6 +945,29 @@ void vtkErrorDiffusionSampler::FinishOutput(
     vtkNew<vtkIntArray> owned;
     AddFieldArray(maskOutput->GetFieldData(), owned, "SamplingGridExtent", 6);
     std::copy(run.Sampled, run.Sampled + 6, owned->GetPointer(0));
+  }
+}
+
+//------------------------------------------------------------------------------
+// A budget that asks for no points gives an empty output that looks like a
+// failure without an error: say why. (A budget above an all-zero volume is
+// already reported by FinishStatistics; a piece of several may be empty where
+// the whole is not, so a piece only warns about NumberOfPoints = 0.)
+void vtkErrorDiffusionSampler::WarnIfEmpty(vtkIdType points, double expected)
+{
+  if (points > 0)
+  {
+    return;
+  }
+  if (this->UseNumberOfPoints && this->NumberOfPoints == 0)
+  {
+    vtkWarningMacro("NumberOfPoints is 0: no points were drawn (set a positive NumberOfPoints).");
+  }
+  else if (!this->UseNumberOfPoints && !this->Internals->Piece && expected < 0.5)
+  {
+    vtkWarningMacro("The expected number of points (the sum of the densities over the voxels) is "
+      << expected << " with DensityScale " << this->DensityScale
+      << ": no points were drawn (raise DensityScale, or use NumberOfPoints).");
   }
 }
 

@@ -84,6 +84,9 @@
  * candidates the kernel visits); abort is honored between layers (there, at
  * the kernel's reports) and leaves an empty output.
  *
+ * A budget that yields no points (NumberOfPoints 0, or a DensityScale that
+ * makes the expected count below one half) gives a warning saying so.
+ *
  * Bad input (no array, non-numeric or cell-data array, component out of range,
  * empty extent, non-finite DensityScale or ModulationScale, an unreadable or
  * malformed parameter file, slabs whose arrays differ) gives a vtkErrorMacro
@@ -420,6 +423,7 @@ private:
   void Receive(int z, const float* density, const unsigned char* mask, vtkIdType count);
   void Emit(int z, const float* density, const unsigned char* mask, vtkIdType count);
   void FinishOutput(vtkImageData* input, vtkPolyData* output, vtkImageData* mask);
+  void WarnIfEmpty(vtkIdType points, double expected);
   vtkDataArray* GetDensityArray(vtkImageData* input, vtkInformationVector** inputVector);
 };
 
