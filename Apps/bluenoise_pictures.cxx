@@ -601,12 +601,17 @@ void AddAnisotropyChart(vtkContextView* view, const SpectrumCurves& curves, doub
   PlaceChart(view, chart, axes);
 }
 
-// The overall title: the caller's, then the scalar metrics.
-std::string PlotTitle(vtkTable* spectrum, const std::string& title)
+// The overall title: the caller's, then the subtitle and the scalar metrics
+// on one line (two lines fit above the charts).
+std::string PlotTitle(vtkTable* spectrum, const std::string& title, const std::string& subtitle)
 {
   std::string metrics = "L(g) = " + Format("%.4f", FieldValue(spectrum, "LowFrequencyRatio")) +
     "   S(g) = " + Format("%.4f", FieldValue(spectrum, "Symmetry")) +
     "   T(g) = " + Format("%.4f", FieldValue(spectrum, "TargetValue"));
+  if (!subtitle.empty())
+  {
+    metrics = subtitle + ":   " + metrics;
+  }
   return title.empty() ? metrics : title + "\n" + metrics;
 }
 }
@@ -748,7 +753,7 @@ bool WriteSpectrumPlot(const PictureSession& session, vtkTable* spectrum,
   AddPowerChart(view, curves, g, fg, AxesRect(w, 0.5f * top, 0.5f * top));
   AddAnisotropyChart(view, curves, fg, AxesRect(w, 0.0f, 0.5f * top));
   const double titleColor[3] = { 0.1, 0.1, 0.12 };
-  view->GetRenderer()->AddViewProp(Text(PlotTitle(spectrum, options.Title), 17, titleColor,
+  view->GetRenderer()->AddViewProp(Text(PlotTitle(spectrum, options.Title, options.Subtitle), 17, titleColor,
     VTK_TEXT_CENTERED, 0.5, 1.0 - 6.0 / h));
 
   view->Render();

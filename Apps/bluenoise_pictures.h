@@ -67,6 +67,8 @@ struct SpectrumPlot
 {
   /// Title above the plots.
   std::string Title;
+  /// Second line, before the scalar metrics (e.g. the method and parameters).
+  std::string Subtitle;
   int Width = 1024;
   int Height = 800;
 };

@@ -3,7 +3,7 @@
 // bluenoise-sample: the project's main job. Samples a volume by importance
 // with vtkErrorDiffusionSampler and writes the points (.vtp, .csv or .ply),
 // the blue-noise spectrum of a uniform-density run with the same number of
-// points and parameters (vtkBlueNoiseSpectrum) as CSV, and two pictures: the
+// points, method and parameters (vtkBlueNoiseSpectrum) as CSV, and two pictures: the
 // points rendered off screen and the spectrum plotted (see --help).
 //
 // The steps, in order: options; the input checked (its header against the
@@ -16,6 +16,7 @@
 #include "bluenoise_options.h"
 #include "bluenoise_output.h"
 #include "bluenoise_pictures.h"
+#include "bluenoise_sampler_choices.h"
 #include "bluenoise_volume.h"
 #include "vtkBlueNoiseSpectrum.h"
 #include "vtkErrorDiffusionParameterTable.h"
@@ -60,7 +61,9 @@ struct Settings
   std::string OutputDir = "bluenoise-output";
   std::string SamplesName = "samples.vtp";
   std::string ArrayName;
-  std::string Parameters = "paper";
+  // vtkErrorDiffusionSampler's own defaults (Method, ParameterSet), by name.
+  std::string Method = bluenoise::DefaultMethodName();
+  std::string Parameters = bluenoise::DefaultParameterSetName();
   long long Points = 100000;
   double Scale = -1.0; // unset: the budget --points
   int Seed = 0;
@@ -97,10 +100,14 @@ const char* const Footer =
   "                NumberOfPoints, Density (g), PrincipalFrequency (f_g),\n"
   "                LowFrequencyRatio (L), SymmetryCorrelation, Symmetry (S),\n"
   "                TargetValue (T), Realizations, GridDimensions (space separated),\n"
-  "                then the run's Seed and Parameters\n"
+  "                then the run's Seed, Method and Parameters\n"
   "  samples.png   the points rendered off screen: all in 3D, and an axial and a\n"
   "                sagittal slab through the center, colored by the sampled array\n"
-  "  spectrum.png  RadialPower and Anisotropy (dB) against Frequency, f_g marked\n"
+  "  spectrum.png  RadialPower and Anisotropy (dB) against Frequency, f_g marked;\n"
+  "                the title names the method and parameters used\n"
+  "Methods and parameter sets are those of vtkErrorDiffusionSampler and the\n"
+  "ParaView panel (Method, Parameter Set), with the same defaults; the\n"
+  "parameters are those of the error diffusion (the two error-diffusion methods).\n"
   "Frames: NIfTI volumes are sampled in the file's world frame (sform, else qform;\n"
   "millimetres) unless --voxel-space; other formats in their origin and spacing.\n"
   "Streaming: raw MetaImage, raw NRRD and VTI with raw appended data are read in\n"
@@ -131,8 +138,15 @@ int ParseOptions(int argc, char* argv[], Settings& s)
   cli.AddText("--array", s.ArrayName, "NAME", "point array to sample by (default: the active scalars, "
                                       "else the first array)");
   cli.AddInteger("--seed", s.Seed, 0, 2147483647, "seed of the threshold noise");
+  std::vector<std::string> methods;
+  for (const auto& method : bluenoise::SamplerMethods())
+  {
+    methods.push_back(method.Name);
+  }
+  cli.AddChoice("--method", s.Method, methods, "sampling method");
   cli.AddText("--parameters", s.Parameters, "SET|FILE",
-    "diffusion parameters: paper (Table 1), fixed, optimized, or a parameter table file");
+    "diffusion parameters: " + bluenoise::ChoiceNames(bluenoise::SamplerParameterSets()) +
+      " (paper: Table 1), or a parameter table file");
   cli.AddInteger("--spectrum-grid", s.SpectrumGrid, 8, 512,
     "edge L of the cubic grid of the uniform-density run");
   cli.AddReal("--slab-size", s.SlabMegabytes, 0.0, 1.0e6,
@@ -159,7 +173,16 @@ int ParseOptions(int argc, char* argv[], Settings& s)
 
 bool IsNamedSet(const std::string& parameters)
 {
-  return parameters == "paper" || parameters == "fixed" || parameters == "optimized";
+  bluenoise::SamplerChoice set;
+  return bluenoise::FindChoice(bluenoise::SamplerParameterSets(), parameters, set);
+}
+
+bool IsDiffusion(const std::string& method)
+{
+  bluenoise::SamplerChoice choice;
+  return bluenoise::FindChoice(bluenoise::SamplerMethods(), method, choice) &&
+    (choice.Value == vtkErrorDiffusionSampler::METHOD_ERROR_DIFFUSION ||
+      choice.Value == vtkErrorDiffusionSampler::METHOD_RELAXED_ERROR_DIFFUSION);
 }
 
 // The parameter file of --parameters, read once here so that a bad one
@@ -210,18 +233,21 @@ bool ChooseArray(vtkImageData* image, const std::string& requested, std::string&
   return true;
 }
 
-// The parameter set of --parameters (paper, fixed, optimized, or a file).
-void SetParameters(vtkErrorDiffusionSampler* sampler, const std::string& parameters)
+// --method and --parameters (a named set or a file), set explicitly even
+// when they are the class's defaults.
+void SetMethodAndParameters(
+  vtkErrorDiffusionSampler* sampler, const std::string& method, const std::string& parameters)
 {
-  if (parameters == "fixed")
+  bluenoise::SamplerChoice choice;
+  if (bluenoise::FindChoice(bluenoise::SamplerMethods(), method, choice))
   {
-    sampler->SetParameterSet(vtkErrorDiffusionSampler::PARAMETERS_FIXED);
+    sampler->SetMethod(choice.Value);
   }
-  else if (parameters == "optimized")
+  if (bluenoise::FindChoice(bluenoise::SamplerParameterSets(), parameters, choice))
   {
-    sampler->SetParameterSet(vtkErrorDiffusionSampler::PARAMETERS_OPTIMIZED);
+    sampler->SetParameterSet(choice.Value);
   }
-  else if (parameters != "paper")
+  else
   {
     sampler->SetParameterSet(vtkErrorDiffusionSampler::PARAMETERS_CUSTOM);
     sampler->SetParameterFile(parameters.c_str());
@@ -230,10 +256,10 @@ void SetParameters(vtkErrorDiffusionSampler* sampler, const std::string& paramet
 
 // The spectrum of a uniform-density run: a constant density g = points / L^3
 // (clamped to (0, 0.5]) on an L^3 grid, sampled like the volume (same seed,
-// same parameters), then measured by vtkBlueNoiseSpectrum on the sampler's
-// grid (its SamplingGrid field data).
+// method and parameters), then measured by vtkBlueNoiseSpectrum on the
+// sampler's grid (its SamplingGrid field data).
 vtkSmartPointer<vtkTable> UniformSpectrum(vtkIdType points, int edge, int seed,
-  const std::string& parameters, double& density, std::string& error)
+  const std::string& method, const std::string& parameters, double& density, std::string& error)
 {
   const double voxels = static_cast<double>(edge) * edge * edge;
   density = std::min(std::max(static_cast<double>(points) / voxels, 1.0 / voxels), 0.5);
@@ -250,7 +276,7 @@ vtkSmartPointer<vtkTable> UniformSpectrum(vtkIdType points, int edge, int seed,
   sampler->SetDensityMappingToIdentity();
   sampler->UseNumberOfPointsOff(); // the density is the value itself
   sampler->SetSeed(seed);
-  SetParameters(sampler, parameters);
+  SetMethodAndParameters(sampler, method, parameters);
   vtkNew<vtkBlueNoiseSpectrum> spectrum;
   spectrum->SetInputConnection(sampler->GetOutputPort());
   spectrum->GenerateSpectrumImageOff();
@@ -315,8 +341,8 @@ bool WriteSpectrumCSV(vtkTable* table, const std::string& path)
 
 // The scalar metrics (the table's field data), one `Metric,Value` row each;
 // several components are written space separated.
-bool WriteMetricsCSV(
-  vtkTable* table, int seed, const std::string& parameters, const std::string& path)
+bool WriteMetricsCSV(vtkTable* table, int seed, const std::string& method,
+  const std::string& parameters, const std::string& path)
 {
   std::ofstream out(path);
   out << "Metric,Value\n";
@@ -346,6 +372,7 @@ bool WriteMetricsCSV(
     quoted = "\"" + escaped + "\"";
   }
   out << "Seed," << seed << "\n";
+  out << "Method," << method << "\n";
   out << "Parameters," << quoted << "\n";
   out.close();
   return static_cast<bool>(out);
@@ -378,7 +405,7 @@ bool Sample(const bluenoise::Volume& volume, const Settings& s, const std::strin
   }
   sampler->SetDensityMappingToScalarRange();
   sampler->SetSeed(s.Seed);
-  SetParameters(sampler, s.Parameters);
+  SetMethodAndParameters(sampler, s.Method, s.Parameters);
   if (s.Scale >= 0.0)
   {
     sampler->UseNumberOfPointsOff();
@@ -427,16 +454,33 @@ bool Sample(const bluenoise::Volume& volume, const Settings& s, const std::strin
   return true;
 }
 
+// The method and parameters of the run in words: "relaxed error diffusion,
+// optimized parameters"; the parameters only for the error-diffusion methods,
+// which use them.
+std::string MethodLabel(const Settings& s)
+{
+  bluenoise::SamplerChoice choice;
+  std::string label = bluenoise::FindChoice(bluenoise::SamplerMethods(), s.Method, choice)
+    ? choice.Label
+    : s.Method;
+  if (!IsDiffusion(s.Method))
+  {
+    return label;
+  }
+  return label + ", " +
+    (bluenoise::FindChoice(bluenoise::SamplerParameterSets(), s.Parameters, choice)
+        ? std::string(choice.Label)
+        : "parameters of " + vtksys::SystemTools::GetFilenameName(s.Parameters));
+}
+
 std::string SpectrumTitle(const Settings& s, const Run& run)
 {
   vtkDataArray* count = run.Spectrum->GetFieldData()->GetArray("NumberOfPoints");
   char title[256];
   std::snprintf(title, sizeof(title),
-    "Spectrum of a uniform-density run: g = %.4g on %d^3 voxels, %lld points, seed %d, %s "
-    "parameters",
+    "Spectrum of a uniform-density run: g = %.4g on %d^3 voxels, %lld points, seed %d",
     run.UniformDensity, s.SpectrumGrid,
-    static_cast<long long>(count ? std::llround(count->GetComponent(0, 0)) : 0), s.Seed,
-    IsNamedSet(s.Parameters) ? s.Parameters.c_str() : "custom");
+    static_cast<long long>(count ? std::llround(count->GetComponent(0, 0)) : 0), s.Seed);
   return title;
 }
 
@@ -459,6 +503,7 @@ bool WritePictures(const bluenoise::PictureSession& session, bluenoise::OutputFo
   }
   bluenoise::SpectrumPlot plot;
   plot.Title = SpectrumTitle(s, run);
+  plot.Subtitle = MethodLabel(s); // the method and parameters actually used
   std::string why;
   if (!bluenoise::WriteSamplesPicture(
         session, run.Samples, picture, output.Temporary("samples.png"), why))
@@ -487,7 +532,8 @@ bool WriteFiles(const bluenoise::PictureSession& session, bluenoise::OutputFolde
   }
   errno = 0;
   if (!WriteSpectrumCSV(run.Spectrum, output.Temporary("spectrum.csv")) ||
-    !WriteMetricsCSV(run.Spectrum, s.Seed, s.Parameters, output.Temporary("metrics.csv")))
+    !WriteMetricsCSV(
+      run.Spectrum, s.Seed, s.Method, s.Parameters, output.Temporary("metrics.csv")))
   {
     error = "cannot write spectrum.csv or metrics.csv in " + s.OutputDir + ": " +
       (errno ? std::strerror(errno) : "write failed");
@@ -513,6 +559,8 @@ void PrintResults(const Settings& s, const bluenoise::OutputFolder& output,
       std::cout << "frame: " << frame[1] << "\n";
     }
   }
+  std::cout << "method: " << MethodLabel(s) << " (--method " << s.Method << " --parameters "
+            << s.Parameters << ")\n";
   std::cout << "points: " << output.Final(s.SamplesName) << "\n";
   std::cout << "spectrum: " << output.Final("spectrum.csv") << " (uniform density g="
             << run.UniformDensity << " on " << s.SpectrumGrid << "^3 voxels)\n";
@@ -588,7 +636,7 @@ int main(int argc, char* argv[])
     return Fail(error);
   }
   run.Spectrum = UniformSpectrum(run.Samples->GetNumberOfPoints(), s.SpectrumGrid, s.Seed,
-    s.Parameters, run.UniformDensity, error);
+    s.Method, s.Parameters, run.UniformDensity, error);
   if (!run.Spectrum)
   {
     return Fail(error);

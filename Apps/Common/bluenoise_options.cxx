@@ -5,6 +5,7 @@
 
 #include <CLI/CLI.hpp>
 
+#include <algorithm>
 #include <cerrno>
 #include <cmath>
 #include <cstdlib>
@@ -177,6 +178,27 @@ void CommandLine::AddText(const std::string& name, std::string& value, const std
       },
       help + (value.empty() ? std::string() : " (default " + value + ")"))
     ->type_name(type);
+}
+
+void CommandLine::AddChoice(const std::string& name, std::string& value,
+  const std::vector<std::string>& choices, const std::string& help)
+{
+  std::string list;
+  for (size_t i = 0; i < choices.size(); ++i)
+  {
+    list += (i == 0 ? "" : i + 1 == choices.size() ? " or " : ", ") + choices[i];
+  }
+  this->App
+    ->add_option_function<std::string>(
+      name, [&value, name, choices, list](const std::string& text) {
+        if (std::find(choices.begin(), choices.end(), text) == choices.end())
+        {
+          throw CLI::ValidationError(name, Quoted(text) + " is not one of " + list);
+        }
+        value = text;
+      },
+      help + ": " + list + (value.empty() ? std::string() : " (default " + value + ")"))
+    ->type_name("NAME");
 }
 
 void CommandLine::AddFlag(const std::string& name, bool& value, const std::string& help)

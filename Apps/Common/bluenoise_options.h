@@ -45,6 +45,9 @@ public:
   /// A string; `type` names it in --help (FILE, DIR, NAME, ...).
   void AddText(const std::string& name, std::string& value, const std::string& type,
     const std::string& help);
+  /// One of `choices`, spelled exactly; anything else is an error that lists them.
+  void AddChoice(const std::string& name, std::string& value,
+    const std::vector<std::string>& choices, const std::string& help);
   void AddFlag(const std::string& name, bool& value, const std::string& help);
   /// At most one positional argument.
   void AddPositional(const std::string& name, std::string& value, const std::string& help);

@@ -14,6 +14,10 @@ namespace
 // State bits of a voxel while a run goes: a sample / in conflict with one.
 const unsigned char SampleBit = 1;
 const unsigned char CoveredBit = 2;
+// Progress: the share of a run before the first pass (the radii and levels,
+// then the shuffle, half each); the passes share the rest, MaximumPasses of them and the re-run
+// of the best one, each by the voxels it has visited.
+const double PrepareShare = 0.05;
 }
 
 //------------------------------------------------------------------------------
@@ -129,24 +133,30 @@ bool vtkPoissonDiskKernel::IsSample(vtkIdType v) const
 //------------------------------------------------------------------------------
 bool vtkPoissonDiskKernel::Run(std::string*)
 {
-  this->Prepare();
   this->Passes = 0;
+  if (!this->Prepare() || !this->ReportProgress(0.5 * PrepareShare))
+  {
+    return false;
+  }
   vtkBlueNoiseRandom random;
   random.Seed(this->Seed, 0x5851f42d4c957f2dULL);
   this->DitherKey = (static_cast<std::uint64_t>(random.Next()) << 32u) | random.Next();
+  const double active = static_cast<double>(this->Order.size());
   for (size_t i = this->Order.size(); i > 1; --i)
   {
+    if (i % (4 * ProgressInterval) == 0 &&
+      !this->ReportProgress(PrepareShare * (1.0 - 0.5 * i / active)))
+    {
+      return false;
+    }
     std::swap(this->Order[i - 1], this->Order[random.Below(i)]);
   }
-  if (!this->Order.empty())
-  {
-    this->Search();
-  }
-  return true;
+  return this->ReportProgress(PrepareShare) && (this->Order.empty() || this->Search());
 }
 
 //------------------------------------------------------------------------------
-void vtkPoissonDiskKernel::Prepare()
+// False when the progress callback stopped the run.
+bool vtkPoissonDiskKernel::Prepare()
 {
   const int* extent = this->Margin.GetExtent();
   this->Ball.SetDimensions(extent[0], extent[1], extent[2]);
@@ -162,6 +172,11 @@ void vtkPoissonDiskKernel::Prepare()
   std::vector<double> subTargets(vtkVoxelMargin::NumberOfLevels, 0.0);
   for (vtkIdType v = 0; v < voxels; ++v)
   {
+    if (v % (4 * ProgressInterval) == 4 * ProgressInterval - 1 &&
+      !this->ReportProgress(0.5 * PrepareShare * v / voxels))
+    {
+      return false;
+    }
     const float g = density[v];
     if (g > 0.0f && g < 1.0f)
     {
@@ -201,10 +216,11 @@ void vtkPoissonDiskKernel::Prepare()
   {
     this->LevelOf[v] = levelOfSub[this->LevelOf[v]];
   }
+  return true;
 }
 
 //------------------------------------------------------------------------------
-void vtkPoissonDiskKernel::Search()
+bool vtkPoissonDiskKernel::Search()
 {
   const size_t n = this->Levels.size();
   std::vector<double> scales(n), best(n);
@@ -215,9 +231,14 @@ void vtkPoissonDiskKernel::Search()
     target += level.Target;
   }
   vtkIdType count = 0;
+  const double passShare = (1.0 - PrepareShare) / (this->MaximumPasses + 1);
   for (int pass = 0; pass < this->MaximumPasses; ++pass)
   {
-    count = this->RunPass();
+    count = this->RunPass(PrepareShare + pass * passShare, passShare);
+    if (count < 0)
+    {
+      return false;
+    }
     // Done when the count is within CountTolerance of sum g (saturated voxels
     // included) and every level is close to its own target.
     double error = 0.0;
@@ -254,12 +275,14 @@ void vtkPoissonDiskKernel::Search()
     {
       this->Levels[i].Scale = best[i];
     }
-    this->RunPass();
+    return this->RunPass(1.0 - passShare, passShare) >= 0;
   }
+  return true;
 }
 
 //------------------------------------------------------------------------------
-vtkIdType vtkPoissonDiskKernel::RunPass()
+// The samples' count, or -1 when the progress callback stopped the run.
+vtkIdType vtkPoissonDiskKernel::RunPass(double progressBegin, double progressWidth)
 {
   ++this->Passes;
   const vtkIdType nx = this->Margin.GetExtent()[0];
@@ -280,8 +303,15 @@ vtkIdType vtkPoissonDiskKernel::RunPass()
     level.Count = 0;
   }
   vtkIdType count = 0;
+  const double visits = static_cast<double>(this->Order.size());
+  vtkIdType visited = 0;
   for (const vtkIdType sample : this->Order)
   {
+    if (++visited % ProgressInterval == 0 &&
+      !this->ReportProgress(progressBegin + progressWidth * (visited / visits)))
+    {
+      return -1;
+    }
     if (this->State[sample] & CoveredBit)
     {
       continue;

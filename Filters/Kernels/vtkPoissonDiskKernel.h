@@ -136,9 +136,9 @@ protected:
 
 private:
   struct Level;
-  void Prepare();
-  void Search();
-  vtkIdType RunPass();
+  bool Prepare();
+  bool Search();
+  vtkIdType RunPass(double progressBegin, double progressWidth);
   void MarkConflicts(vtkIdType sample);
   double RadiusOf(vtkIdType v) const;
 

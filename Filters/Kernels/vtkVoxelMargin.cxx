@@ -116,7 +116,8 @@ float vtkVoxelMargin::SmallestBorderDensity(int nx, int ny, int nz, const float*
 }
 
 //------------------------------------------------------------------------------
-void vtkVoxelMargin::Extend(int nx, int ny, int nz, const float* density, int margin, int depth)
+bool vtkVoxelMargin::Extend(int nx, int ny, int nz, const float* density, int margin, int depth,
+  const std::function<bool(double)>& progress)
 {
   this->Dims[0] = nx;
   this->Dims[1] = ny;
@@ -138,10 +139,12 @@ void vtkVoxelMargin::Extend(int nx, int ny, int nz, const float* density, int ma
       std::copy(row, row + nx, this->Density.begin() + (m + ex * ((y + m) + ey * (z + m))));
     }
   }
-  if (depth > 0)
+  if (progress && !progress(0.2))
   {
-    this->Grow(std::min(depth, 255)); // steps are kept in a byte
+    return false;
   }
+  // Steps are kept in a byte.
+  return depth <= 0 || this->Grow(std::min(depth, 255), progress);
 }
 
 //------------------------------------------------------------------------------
@@ -168,11 +171,20 @@ bool vtkVoxelMargin::Pull(vtkIdType v, int step)
 }
 
 //------------------------------------------------------------------------------
-void vtkVoxelMargin::Grow(int depth)
+// False when `progress` stopped it (reported from 0.2, the copy, to 1).
+bool vtkVoxelMargin::Grow(int depth, const std::function<bool(double)>& progress)
 {
   std::vector<vtkIdType> front, next;
-  for (vtkIdType v = 0; v < this->GetNumberOfVoxels(); ++v)
+  const vtkIdType voxels = this->GetNumberOfVoxels();
+  const vtkIdType interval = vtkIdType(1) << 18;
+  for (vtkIdType v = 0; v < voxels; ++v)
   {
+    // The first step visits every voxel; the later ones only the front.
+    if (progress && v % interval == interval - 1 &&
+      !progress(0.2 + 0.6 * static_cast<double>(v) / static_cast<double>(voxels)))
+    {
+      return false;
+    }
     if (!IsActive(this->Density[v]) && this->Pull(v, 1))
     {
       front.push_back(v);
@@ -196,7 +208,12 @@ void vtkVoxelMargin::Grow(int depth)
       });
     }
     std::swap(front, next);
+    if (progress && !progress(0.8 + 0.2 * step / depth))
+    {
+      return false;
+    }
   }
+  return true;
 }
 
 //------------------------------------------------------------------------------

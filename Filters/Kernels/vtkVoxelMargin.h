@@ -44,6 +44,7 @@
 #include "vtkFiltersBlueNoiseModule.h" // for export macro
 #include "vtkType.h"                   // for vtkIdType
 
+#include <functional> // for the progress callback
 #include <vector>
 
 class VTKFILTERSBLUENOISE_EXPORT vtkVoxelMargin
@@ -70,7 +71,10 @@ public:
 
   /// Copy the volume into the grid extended by `margin` voxels per side and
   /// continue it `depth` steps around its support (both at least 0).
-  void Extend(int nx, int ny, int nz, const float* density, int margin, int depth);
+  /// `progress`, when set, is called with the fraction done every so many
+  /// voxels; false from it stops the extension, and Extend returns false.
+  bool Extend(int nx, int ny, int nz, const float* density, int margin, int depth,
+    const std::function<bool(double)>& progress = nullptr);
 
   const float* GetDensity() const { return this->Density.data(); }
   const int* GetExtent() const { return this->Extent; }
@@ -90,7 +94,7 @@ public:
   }
 
 private:
-  void Grow(int depth);
+  bool Grow(int depth, const std::function<bool(double)>& progress);
   bool Pull(vtkIdType v, int step);
 
   int Dims[3] = { 0, 0, 0 };

@@ -20,6 +20,8 @@ vtkIdType vtkVoxelPointSetKernel::Sample(
     }
     return -1;
   }
+  this->Aborted = false;
+  this->LastProgress = 0.0;
   const vtkIdType voxels = static_cast<vtkIdType>(nx) * ny * nz;
   double sum = 0.0;
   for (vtkIdType v = 0; v < voxels; ++v)
@@ -48,9 +50,20 @@ vtkIdType vtkVoxelPointSetKernel::Sample(
       reach(vtkVoxelMargin::SmallestBorderDensity(nx, ny, nz, density)), MaximumDepth);
     depth = std::max(depth, margin);
   }
-  this->Margin.Extend(nx, ny, nz, density, margin, depth);
-  if (!this->Run(error))
+  // The continuation costs a few passes over the volume: the first share of
+  // the progress, the peer's run the rest.
+  std::function<bool(double)> extending;
+  if (this->Progress)
   {
+    extending = [this](double f) { return this->Report(ExtendedShare * f); };
+  }
+  if (!this->Margin.Extend(nx, ny, nz, density, margin, depth, extending) ||
+    !this->Report(ExtendedShare) || !this->Run(error))
+  {
+    if (this->Aborted && error)
+    {
+      *error = "aborted";
+    }
     return -1;
   }
   vtkIdType count = 0;
@@ -61,4 +74,31 @@ vtkIdType vtkVoxelPointSetKernel::Sample(
     count += mask[v];
   }
   return count;
+}
+
+//------------------------------------------------------------------------------
+bool vtkVoxelPointSetKernel::ReportProgress(double fraction)
+{
+  return this->Report(ExtendedShare + (1.0 - ExtendedShare) * fraction);
+}
+
+//------------------------------------------------------------------------------
+bool vtkVoxelPointSetKernel::Report(double fraction)
+{
+  if (!this->Progress)
+  {
+    return true;
+  }
+  // Reports only go forward, and 1 is left for the caller to say when it is done.
+  fraction = std::min(fraction, std::nextafter(1.0, 0.0));
+  if (fraction <= this->LastProgress)
+  {
+    return true;
+  }
+  this->LastProgress = fraction;
+  if (!this->Progress(fraction))
+  {
+    this->Aborted = true;
+  }
+  return !this->Aborted;
 }

@@ -27,6 +27,14 @@
  * gets less than one reach, or none); the depth of the continuation into empty
  * and saturated voxels takes g from the smallest density on the border of the
  * support, at most MaximumDepth voxels, and at least the margin.
+ *
+ * Progress and abort: a callback set with SetProgressCallback() is called
+ * with the fraction of the run done, in [0, 1), at least every
+ * ProgressInterval voxels or candidates the peer visits (a few hundred times
+ * per run at most); when it returns false the peer stops, and Sample()
+ * returns -1 with GetAborted() true ("aborted" in `error`) and the mask
+ * untouched. The kernel stays free of VTK's pipeline: the filter forwards its
+ * own progress and abort flag.
  */
 #ifndef vtkVoxelPointSetKernel_h
 #define vtkVoxelPointSetKernel_h
@@ -36,7 +44,9 @@
 #include "vtkVoxelMargin.h"            // for the member
 
 #include <cstdint>
+#include <functional> // for std::function
 #include <string>
+#include <utility> // for std::move
 
 class VTKFILTERSBLUENOISE_EXPORT vtkVoxelPointSetKernel
 {
@@ -50,6 +60,16 @@ public:
 
   void SetSeed(std::uint64_t seed) { this->Seed = seed; }
   std::uint64_t GetSeed() const { return this->Seed; }
+
+  /**
+   * Called with the fraction done (in [0, 1)) while Sample() runs; return
+   * false to stop it (see the class comment). Default none.
+   */
+  using ProgressCallback = std::function<bool(double)>;
+  void SetProgressCallback(ProgressCallback callback) { this->Progress = std::move(callback); }
+
+  /// Whether the last Sample() was stopped by the progress callback.
+  bool GetAborted() const { return this->Aborted; }
 
   /// Sample the volume continued around its support and drop the continuation (default on).
   void SetExtendSupport(bool on) { this->ExtendSupport = on; }
@@ -80,12 +100,32 @@ protected:
   /// Whether active voxel v of the extended grid is a sample after Run().
   virtual bool IsSample(vtkIdType v) const = 0;
 
+  /// The share of the progress of the volume's continuation, before Run().
+  static constexpr double ExtendedShare = 0.1;
+
+  /// Voxels or candidates a peer visits between two calls of ReportProgress().
+  static constexpr vtkIdType ProgressInterval = vtkIdType(1) << 14;
+
+  /**
+   * For the peers, from Run(): report `fraction` of the run (after the
+   * continuation's share; below 1 in all; only a fraction above the last one
+   * reported goes to the callback). False when the callback
+   * asks to stop: the peer then returns false from Run() at once (Aborted is
+   * set, Sample() reports it).
+   */
+  bool ReportProgress(double fraction);
+
   std::uint64_t Seed = 0;
   bool ExtendSupport = true;
   double ExpectedCount = 0.0;
   vtkVoxelMargin Margin;
+  bool Aborted = false;
 
 private:
+  bool Report(double fraction); // of the whole Sample()
+  ProgressCallback Progress;
+  double LastProgress = 0.0;
+
   vtkVoxelPointSetKernel(const vtkVoxelPointSetKernel&) = delete;
   vtkVoxelPointSetKernel& operator=(const vtkVoxelPointSetKernel&) = delete;
 };

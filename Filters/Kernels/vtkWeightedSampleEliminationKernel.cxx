@@ -26,6 +26,12 @@ inline double PackingRadius(double g)
 {
   return std::cbrt(1.0 / (4.0 * std::sqrt(2.0) * g));
 }
+
+// Progress: the shares of a run that end with the candidates drawn and with
+// their weights computed (each weight and each elimination visits the
+// candidate's neighborhood once); the eliminations take the rest.
+const double DrawnShare = 0.1;
+const double WeighedShare = 0.55;
 }
 
 //------------------------------------------------------------------------------
@@ -74,9 +80,7 @@ bool vtkWeightedSampleEliminationKernel::Run(std::string* error)
   const double ratio = real > 0 ? static_cast<double>(target) / static_cast<double>(real) : 1.0;
   this->LimitFraction = this->WeightLimiting ? Beta * (1.0 - std::pow(ratio, Gamma)) : 0.0;
   this->SetLevelTargets(levelSums);
-  this->ComputeWeights();
-  this->Eliminate();
-  return true;
+  return this->ReportProgress(DrawnShare) && this->ComputeWeights() && this->Eliminate();
 }
 
 //------------------------------------------------------------------------------
@@ -235,13 +239,19 @@ inline bool vtkWeightedSampleEliminationKernel::Above(const Node& a, const Node&
 }
 
 //------------------------------------------------------------------------------
-void vtkWeightedSampleEliminationKernel::ComputeWeights()
+// False when the progress callback stopped the run.
+bool vtkWeightedSampleEliminationKernel::ComputeWeights()
 {
   const auto m = static_cast<int>(this->Candidates);
   this->Heap.resize(static_cast<size_t>(m));
   this->Position.resize(static_cast<size_t>(m));
   for (int i = 0; i < m; ++i)
   {
+    if (i % ProgressInterval == ProgressInterval - 1 &&
+      !this->ReportProgress(DrawnShare + (WeighedShare - DrawnShare) * i / m))
+    {
+      return false;
+    }
     double sum = 0.0;
     this->VisitPartners(i, [&sum](int, double w) { sum += w; });
     this->Heap[i] = { sum, this->Priority[i], i };
@@ -251,16 +261,26 @@ void vtkWeightedSampleEliminationKernel::ComputeWeights()
   {
     this->SiftDown(p);
   }
+  return true;
 }
 
 //------------------------------------------------------------------------------
-void vtkWeightedSampleEliminationKernel::Eliminate()
+// False when the progress callback stopped the run.
+bool vtkWeightedSampleEliminationKernel::Eliminate()
 {
   // Virtual candidates go in weight order too; real ones go while their level
   // has more than its target, and are kept (they leave the heap but still
   // weigh on their neighbors) once it has not.
+  const double removals = static_cast<double>(std::max<vtkIdType>(this->Remaining, 1));
+  vtkIdType steps = 0;
   while (this->Remaining > 0)
   {
+    if (++steps % ProgressInterval == 0 &&
+      !this->ReportProgress(
+        WeighedShare + (1.0 - WeighedShare) * (1.0 - this->Remaining / removals)))
+    {
+      return false;
+    }
     const int e = this->Heap[0].Candidate;
     this->Heap[0] = this->Heap.back();
     this->Position[this->Heap[0].Candidate] = 0;
@@ -291,6 +311,7 @@ void vtkWeightedSampleEliminationKernel::Eliminate()
       }
     });
   }
+  return true;
 }
 
 //------------------------------------------------------------------------------

@@ -132,9 +132,9 @@ private:
   vtkIdType DrawCandidates(vtkIdType target);
   template <typename Visit>
   void VisitPartners(int i, Visit&& visit);
-  void ComputeWeights();
+  bool ComputeWeights();
   void SetLevelTargets(const std::vector<double>& sums);
-  void Eliminate();
+  bool Eliminate();
   void SiftDown(int position);
 
   double CandidateRatio = 5.0;

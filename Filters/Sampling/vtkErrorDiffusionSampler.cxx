@@ -848,11 +848,25 @@ bool vtkErrorDiffusionSampler::SampleWhole(vtkImageData* input, vtkDataArray* ar
                                                                               << " voxels).");
     return false;
   }
+  // Progress over what is left of the run: the densities mapped (a share as
+  // for the statistics), the kernel's own reports, then the points built.
+  const double base = run.ProgressDone;
+  const double width = std::max(run.ProgressTotal - base, 0.0);
+  const double filled = 0.05, sampled = 0.95;
+  const auto report = [&](double fraction) {
+    run.ProgressDone = base + width * fraction;
+    this->UpdateProgress(run.ProgressDone / run.ProgressTotal);
+    return !this->IsAborted();
+  };
   for (int z = run.Sampled[4]; z <= run.Sampled[5]; ++z)
   {
     const vtkIdType begin = (z - extent[4]) * layer;
     const vtkIdType k = z - run.Sampled[4];
     run.LayerSums[k] = run.Density.Fill(array, begin, begin + layer, ghosts, density.data() + k * layer);
+  }
+  if (!report(filled))
+  {
+    return false;
   }
   std::unique_ptr<vtkVoxelPointSetKernel> kernel;
   if (this->Method == METHOD_POISSON_DISK)
@@ -864,10 +878,21 @@ bool vtkErrorDiffusionSampler::SampleWhole(vtkImageData* input, vtkDataArray* ar
     kernel.reset(new vtkWeightedSampleEliminationKernel);
   }
   kernel->SetSeed(static_cast<std::uint64_t>(this->Seed));
+  // The kernel reports every so many voxels or candidates it visits; an
+  // abort stops it there, and the filter leaves an empty output.
+  kernel->SetProgressCallback(
+    [&](double fraction) { return report(filled + (sampled - filled) * fraction); });
   std::string error;
   if (kernel->Sample(run.NX(), run.NY(), run.SampledLayers(), density.data(), mask.data(), &error) < 0)
   {
-    vtkErrorMacro("Sampling failed: " << error);
+    if (!kernel->GetAborted())
+    {
+      vtkErrorMacro("Sampling failed: " << error);
+    }
+    return false;
+  }
+  if (!report(sampled))
+  {
     return false;
   }
   for (vtkIdType k = 0; k < run.SampledLayers(); ++k)
@@ -928,6 +953,7 @@ void vtkErrorDiffusionSampler::FinishOutput(
     run.Points->SetVerts(run.Assembler.MakeVertices(run.Points->GetNumberOfPoints()));
   }
   output->ShallowCopy(run.Points);
+  this->WarnIfEmpty(output->GetNumberOfPoints(), expected);
 
   vtkFieldData* fd = output->GetFieldData();
   const double* origin = input->GetOrigin();
@@ -963,6 +989,29 @@ void vtkErrorDiffusionSampler::FinishOutput(
     vtkNew<vtkIntArray> owned;
     AddFieldArray(maskOutput->GetFieldData(), owned, "SamplingGridExtent", 6);
     std::copy(run.Sampled, run.Sampled + 6, owned->GetPointer(0));
+  }
+}
+
+//------------------------------------------------------------------------------
+// A budget that asks for no points gives an empty output that looks like a
+// failure without an error: say why. (A budget above an all-zero volume is
+// already reported by FinishStatistics; a piece of several may be empty where
+// the whole is not, so a piece only warns about NumberOfPoints = 0.)
+void vtkErrorDiffusionSampler::WarnIfEmpty(vtkIdType points, double expected)
+{
+  if (points > 0)
+  {
+    return;
+  }
+  if (this->UseNumberOfPoints && this->NumberOfPoints == 0)
+  {
+    vtkWarningMacro("NumberOfPoints is 0: no points were drawn (set a positive NumberOfPoints).");
+  }
+  else if (!this->UseNumberOfPoints && !this->Internals->Piece && expected < 0.5)
+  {
+    vtkWarningMacro("The expected number of points (the sum of the densities over the voxels) is "
+      << expected << " with DensityScale " << this->DensityScale
+      << ": no points were drawn (raise DensityScale, or use NumberOfPoints).");
   }
 }
 

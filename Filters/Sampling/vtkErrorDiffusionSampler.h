@@ -79,8 +79,13 @@
  * whichever of the two has time (UseWorkerThread, when more than one thread
  * is allowed);
  * the pass over the values that a point budget or an unset scalar range needs
- * before the scan runs on as many threads as are allowed. Progress is reported per layer; abort is honored between
- * layers and leaves an empty output.
+ * before the scan runs on as many threads as are allowed. Progress is reported per layer (for
+ * METHOD_POISSON_DISK and METHOD_SAMPLE_ELIMINATION every so many voxels or
+ * candidates the kernel visits); abort is honored between layers (there, at
+ * the kernel's reports) and leaves an empty output.
+ *
+ * A budget that yields no points (NumberOfPoints 0, or a DensityScale that
+ * makes the expected count below one half) gives a warning saying so.
  *
  * Bad input (no array, non-numeric or cell-data array, component out of range,
  * empty extent, non-finite DensityScale or ModulationScale, an unreadable or
@@ -426,6 +431,7 @@ private:
   void Receive(int z, const float* density, const unsigned char* mask, vtkIdType count);
   void Emit(int z, const float* density, const unsigned char* mask, vtkIdType count);
   void FinishOutput(vtkImageData* input, vtkPolyData* output, vtkImageData* mask);
+  void WarnIfEmpty(vtkIdType points, double expected);
   vtkDataArray* GetDensityArray(vtkImageData* input, vtkInformationVector** inputVector);
 };
 

@@ -25,6 +25,7 @@
 #include "vtkSMPTools.h"
 #include "vtkSmartPointer.h"
 #include "vtkStreamingDemandDrivenPipeline.h"
+#include "vtkStringArray.h"
 #include "vtkTable.h"
 #include "vtkUnsignedCharArray.h"
 #include "vtkVersion.h"
@@ -501,6 +502,7 @@ struct vtkBlueNoiseSpectrum::Realization
   SignalKind Kind = SignalKind::Points;
   bool GridFromBounds = false; // rule 3: the grid is built over the bounds
   vtkBlueNoiseSpectrumGrid Grid;
+  std::string GridText; // the grid in words, for the table's SpectrumGrid field data
 };
 
 //------------------------------------------------------------------------------
@@ -713,6 +715,10 @@ int vtkBlueNoiseSpectrum::RequestData(
   }
   this->UpdateProgress(0.9);
   FillTable(table, result);
+  vtkNew<vtkStringArray> gridText; // the grid, where users see it (Information tab)
+  gridText->SetName("SpectrumGrid");
+  gridText->InsertNextValue(realizations[0].GridText);
+  table->GetFieldData()->AddArray(gridText);
   if (this->GenerateSpectrumImage && !FillSpectrumImage(kernel, dims, image))
   {
     vtkErrorMacro("Cannot allocate the " << dims[0] << " x " << dims[1] << " x " << dims[2]
@@ -884,11 +890,16 @@ bool vtkBlueNoiseSpectrum::BuildGrids(std::vector<Realization>& realizations)
       const int dims[3] = { signal[1] - signal[0] + 1, signal[3] - signal[2] + 1,
         signal[5] - signal[4] + 1 };
       r.Grid.SetDimensions(dims);
+      std::ostringstream text;
+      text << "the input image's own grid: extent [" << signal[0] << ", " << signal[1] << ", "
+           << signal[2] << ", " << signal[3] << ", " << signal[4] << ", " << signal[5] << "]";
+      r.GridText = text.str();
     }
     else if (this->UseInputGrid && d.HasSamplingGrid)
     {
       r.Kind = SignalKind::Points;
       r.Grid.SetFromSamplingGrid(d);
+      r.GridText = "the sampler's grid (SamplingGrid field data): " + r.Grid.Describe();
     }
     else
     {
@@ -901,12 +912,30 @@ bool vtkBlueNoiseSpectrum::BuildGrids(std::vector<Realization>& realizations)
   {
     const double* over = this->UseGridBounds ? this->GridBounds : bounds;
     CheckBoundsGrid(over, error);
+    bool assumed = false; // a point set without the sampler's grid, UseInputGrid on
     for (Realization& r : realizations)
     {
       if (r.GridFromBounds)
       {
         r.Grid.SetFromBounds(this->GridDimensions, over);
+        r.GridText = std::string("GridDimensions over the ") +
+          (this->UseGridBounds ? "GridBounds" : "points' bounds") + ": " + r.Grid.Describe();
+        assumed = assumed || (this->UseInputGrid && !r.Whole.IsImage);
       }
+    }
+    // Points that carry no grid may lie anywhere: the spectrum of a grid the
+    // filter made up means something only if they were drawn on it. Once per
+    // execution, naming the grid.
+    if (assumed && error.tellp() == 0)
+    {
+      const Realization& r = *std::find_if(realizations.begin(), realizations.end(),
+        [](const Realization& x) { return x.GridFromBounds && !x.Whole.IsImage; });
+      vtkWarningMacro("The input points carry no sampling grid (the SamplingGridOrigin, "
+                      "SamplingGridSpacing and SamplingGridExtent field data of "
+                      "vtkErrorDiffusionSampler): the spectrum assumes "
+        << r.GridText
+        << ". It describes blue noise only for points drawn on that grid (the table's "
+           "SpectrumGrid field data names it).");
     }
   }
   for (std::size_t i = 0; i < realizations.size() && error.tellp() == 0; ++i)

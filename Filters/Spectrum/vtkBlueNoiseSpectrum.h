@@ -30,7 +30,11 @@
  *    union of the bounds of all such realizations, or over GridBounds when
  *    UseGridBounds is on; the first and last grid points lie on the bounds.
  * With UseInputGrid off, rule 3 applies to every realization (an image then
- * contributes its point or cell centers weighted by the array values).
+ * contributes its point or cell centers weighted by the array values). With
+ * UseInputGrid on, a point set that falls to rule 3 (it carries no sampling
+ * grid: any point set not made by the sampler) gives a warning, once per
+ * execution, naming the grid assumed (origin, spacing, extent): the spectrum
+ * describes blue noise only for points drawn on that grid.
  * Points go to the nearest grid point (voxel center); points outside the grid
  * are dropped with a warning giving their number.
  *
@@ -42,8 +46,10 @@
  * frequency f_g, NaN elsewhere (a chart marks f_g with it). Field data:
  * one-tuple vtkDoubleArrays `NumberOfPoints` (mean over realizations),
  * `Density`, `PrincipalFrequency`, `LowFrequencyRatio`, `SymmetryCorrelation`,
- * `Symmetry`, `TargetValue`, and vtkIntArrays `Realizations` (1 tuple) and
- * `GridDimensions` (3 components).
+ * `Symmetry`, `TargetValue`, vtkIntArrays `Realizations` (1 tuple) and
+ * `GridDimensions` (3 components), and the vtkStringArray `SpectrumGrid`: the
+ * first realization's grid in words (which rule gave it, origin, spacing,
+ * extent), shown in ParaView's Information tab.
  *
  * Output port 1, vtkImageData (when GenerateSpectrumImage is on): the averaged
  * power spectrum P(f) = |B(f)|^2 / N as the point array `Power` (double), zero

@@ -263,6 +263,22 @@ std::size_t vtkBlueNoiseSpectrumGrid::Size() const
 }
 
 //------------------------------------------------------------------------------
+std::string vtkBlueNoiseSpectrumGrid::Describe() const
+{
+  std::ostringstream text;
+  text.precision(6);
+  text << "origin (" << this->Origin[0] << ", " << this->Origin[1] << ", " << this->Origin[2]
+       << "), spacing (" << this->Spacing[0] << ", " << this->Spacing[1] << ", "
+       << this->Spacing[2] << "), extent [";
+  for (int a = 0; a < 3; ++a)
+  {
+    text << (a ? ", " : "") << this->Lower[a] << ", " << this->Lower[a] + this->Dimensions[a] - 1;
+  }
+  text << "]";
+  return text.str();
+}
+
+//------------------------------------------------------------------------------
 void vtkBlueNoiseSpectrumGrid::UniteBounds(double into[6], const double bounds[6])
 {
   for (int a = 0; a < 3; ++a)

@@ -87,6 +87,13 @@ public:
 
   std::size_t Size() const;
 
+  /**
+   * The grid in words, as the spectrum names it to its users: "origin (x, y,
+   * z), spacing (sx, sy, sz), extent [i0, i1, j0, j1, k0, k1]" (the extent of
+   * the grid points in the index space of Origin and Spacing).
+   */
+  std::string Describe() const;
+
   /// Widens `into` (xmin, xmax, ...) to hold `bounds`.
   static void UniteBounds(double into[6], const double bounds[6]);
 

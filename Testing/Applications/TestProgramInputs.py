@@ -725,6 +725,94 @@ def metaimage_byte_order(ctx):
           'the big-endian volume gives other points (%d and %d)' % (len(rows[0]), len(rows[1])))
 
 
+# --- methods and parameter sets: the filter's choices and defaults -----------------
+SAMPLER_HEADER = os.path.join(os.path.dirname(os.path.dirname(os.path.dirname(
+    os.path.abspath(__file__)))), 'Filters', 'Sampling', 'vtkErrorDiffusionSampler.h')
+METHODS = ['relaxed-error-diffusion', 'error-diffusion', 'white-noise', 'poisson-disk',
+           'sample-elimination']
+
+
+def filter_defaults():
+    """vtkErrorDiffusionSampler's C++ defaults of Method and ParameterSet, read from its
+    header (`int Method = METHOD_RELAXED_ERROR_DIFFUSION;`), as the program's names:
+    relaxed-error-diffusion, optimized."""
+    found = {}
+    for line in open(SAMPLER_HEADER):
+        words = line.replace(';', ' ').split()
+        if len(words) == 4 and words[0] == 'int' and words[2] == '=' and \
+                words[1] in ('Method', 'ParameterSet'):
+            prefix = 'METHOD_' if words[1] == 'Method' else 'PARAMETERS_'
+            check(words[3].startswith(prefix), 'unexpected default %s' % line.strip())
+            found[words[1]] = words[3][len(prefix):].lower().replace('_', '-')
+    check(len(found) == 2, 'no Method or ParameterSet default in %s' % SAMPLER_HEADER)
+    return found['Method'], found['ParameterSet']
+
+
+def metrics(ctx):
+    rows = open(os.path.join(ctx.out, 'metrics.csv')).read().splitlines()
+    return dict(r.split(',', 1) for r in rows[1:])
+
+
+def sampled_rows(ctx, volume, name, *extra):
+    summary, path = sampled(ctx, volume, name, '--points', 300, *extra)
+    return sorted(tuple(r[:3]) for r in read_csv(path)[1]), metrics(ctx)
+
+
+@case
+def default_method_is_the_filters(ctx):
+    # The main job's defaults are the filter's (C++, and so pvpython and the
+    # panel, whose XML defaults TestPluginProperties holds to the class's):
+    # what metrics.csv names, and what the run really did (the same points as
+    # with the filter's defaults named explicitly, not those of another set).
+    method, parameters = filter_defaults()
+    check(method in METHODS, 'the filter\'s default %s is not a --method choice' % method)
+    volume = write(ctx.path('v.nii'), nifti_header((16, 16, 16)) + ramp(4096))
+    default, named = sampled_rows(ctx, volume, 'default.csv')
+    check(named.get('Method') == method and named.get('Parameters') == parameters,
+          'metrics.csv names %s / %s, the filter\'s defaults are %s / %s' % (
+              named.get('Method'), named.get('Parameters'), method, parameters))
+    explicit, _ = sampled_rows(ctx, volume, 'explicit.csv', '--method', method,
+                               '--parameters', parameters)
+    check(len(default) > 250 and default == explicit,
+          'the default run differs from --method %s --parameters %s' % (method, parameters))
+    for other in ('paper', 'fixed'):
+        if other != parameters:
+            rows, named = sampled_rows(ctx, volume, other + '.csv', '--parameters', other)
+            check(named.get('Parameters') == other and rows != default,
+                  '--parameters %s gives the points of the default %s' % (other, parameters))
+    p = ctx.run('sample', '--help')
+    check('(default %s)' % method in p.stdout and '(default %s)' % parameters in p.stdout,
+          '--help does not name the defaults')
+
+
+@case
+def method_choices(ctx):
+    # Every method of the filter by its name: a run, metrics.csv names it, the
+    # count near the budget, and the peers' points are not the error
+    # diffusion's (the relaxation may leave a sparse ramp as it is).
+    volume = write(ctx.path('v.nii'), nifti_header((16, 16, 16)) + ramp(4096))
+    seen = {}
+    for method in METHODS:
+        p = ctx.sample(volume, '--samples', method + '.csv', '--points', 300, '--method', method)
+        check(p.returncode == 0, '--method %s: exit status %d' % (method, p.returncode))
+        check(metrics(ctx).get('Method') == method, 'metrics.csv does not name %s' % method)
+        check(('(--method %s ' % method) in p.stdout, 'stdout does not name %s' % method)
+        points = int(ctx.summary(p)['points'])
+        check(abs(points - 300) <= 30, '--method %s: %d points for 300' % (method, points))
+        rows = sorted(tuple(r[:3]) for r in read_csv(os.path.join(ctx.out, method + '.csv'))[1])
+        seen[method] = rows
+    for method in ('white-noise', 'poisson-disk', 'sample-elimination'):
+        check(seen[method] != seen['error-diffusion'],
+              '--method %s gives the points of the error diffusion' % method)
+
+
+@case
+def option_method_unknown(ctx):
+    expect_option_error(ctx, 'sample', ['--method', 'poisson'], '--method', "'poisson'",
+                        'relaxed-error-diffusion', 'sample-elimination')
+    expect_option_error(ctx, 'sample', ['--method', ''], '--method')
+
+
 def main():
     parser = argparse.ArgumentParser()
     parser.add_argument('--sample')

@@ -114,6 +114,62 @@ void CheckBadInput(const char* name)
   Check(n >= 1 && n == CountOf(mask), std::string(name) + ": a good call after bad input works");
 }
 
+/// The progress callback: several reports, strictly increasing in (0, 1), and
+/// the same mask as without it; false from it stops Sample() (-1, "aborted",
+/// GetAborted(), the mask untouched); the next call without an abort works.
+template <typename Kernel>
+void CheckProgress(const char* name)
+{
+  const std::string who = name;
+  const Volume volume = MakeRamp(64);
+  const vtkIdType voxels = volume.Size();
+  std::vector<unsigned char> reference(static_cast<size_t>(voxels));
+  Kernel plain;
+  const vtkIdType count = plain.Sample(
+    volume.Dims[0], volume.Dims[1], volume.Dims[2], volume.Density.data(), reference.data());
+
+  Kernel kernel;
+  std::vector<double> reports;
+  int abortAt = -1; // the report that asks to stop, none when negative
+  kernel.SetProgressCallback([&](double p) {
+    reports.push_back(p);
+    return static_cast<int>(reports.size()) - 1 != abortAt;
+  });
+  std::vector<unsigned char> mask(static_cast<size_t>(voxels), 7);
+  std::string error;
+  const vtkIdType n = kernel.Sample(
+    volume.Dims[0], volume.Dims[1], volume.Dims[2], volume.Density.data(), mask.data(), &error);
+  bool increasing = true;
+  for (size_t i = 0; i < reports.size(); ++i)
+  {
+    increasing = increasing && reports[i] > (i ? reports[i - 1] : 0.0) && reports[i] < 1.0;
+  }
+  Check(reports.size() >= 3 && increasing,
+    who + ": " + Str(reports.size()) + " progress reports, strictly increasing in (0, 1)");
+  Check(n == count && mask == reference && !kernel.GetAborted(),
+    who + ": the callback does not change the samples");
+
+  const size_t all = reports.size();
+  reports.clear();
+  abortAt = static_cast<int>(all / 2);
+  std::fill(mask.begin(), mask.end(), 7);
+  error.clear();
+  Check(kernel.Sample(volume.Dims[0], volume.Dims[1], volume.Dims[2], volume.Density.data(),
+          mask.data(), &error) == -1 &&
+      kernel.GetAborted() && error == "aborted",
+    who + ": false from the callback stops the run (error '" + error + "')");
+  Check(static_cast<int>(reports.size()) == abortAt + 1,
+    who + ": it stops at the report that asked (" + Str(reports.size()) + " reports)");
+  Check(std::all_of(mask.begin(), mask.end(), [](unsigned char m) { return m == 7; }),
+    who + ": an aborted run leaves the mask untouched");
+
+  abortAt = -1;
+  Check(kernel.Sample(volume.Dims[0], volume.Dims[1], volume.Dims[2], volume.Density.data(),
+          mask.data()) == count &&
+      mask == reference && !kernel.GetAborted(),
+    who + ": the next run after an abort gives the same samples");
+}
+
 /// g <= 0 and NaN are never sampled, g >= 1 always, whatever surrounds them.
 template <typename Kernel>
 void CheckEmptyAndSaturated(const char* name, std::vector<unsigned char>& mask)

@@ -194,5 +194,56 @@ int main()
     Check(std::abs(s->GetOutput()->GetNumberOfPoints() - 1000) <= 2,
       "range of +-1e308: " + Str(s->GetOutput()->GetNumberOfPoints()) + " points for 1000");
   }
+  // A budget that yields no points is no error, but says why the output is
+  // empty: NumberOfPoints 0, or a DensityScale whose expected count is below
+  // one half; a budget that yields points says nothing. Every method.
+  for (const int method : { 0, 1, 2, 3, 4 })
+  {
+    const std::string name = " (method " + Str(method) + ")";
+    const struct
+    {
+      bool UseNumberOfPoints;
+      vtkIdType Points;
+      double Scale;
+      const char* Why; // in the warning; empty: no warning, points drawn
+      const char* What;
+    } cases[] = {
+      { true, 0, 1.0, "NumberOfPoints is 0", "NumberOfPoints 0" },
+      { false, 100, 0.0, "expected number of points", "DensityScale 0" },
+      // (Poisson disk draws one point where the others draw none: no warning then.)
+      { false, 100, 1e-6, "expected number of points", "DensityScale 1e-6 (0.0001 expected)" },
+      { true, 50, 1.0, "", "NumberOfPoints 50" },
+    };
+    for (const auto& c : cases)
+    {
+      vtkNew<vtkErrorDiffusionSampler> sampler;
+      vtkNew<MessageObserver> messages;
+      messages->Watch(sampler);
+      sampler->SetInputData(good);
+      sampler->SetDensityMappingToIdentity();
+      sampler->SetMethod(method);
+      sampler->SetUseNumberOfPoints(c.UseNumberOfPoints);
+      sampler->SetNumberOfPoints(c.Points);
+      sampler->SetDensityScale(c.Scale);
+      sampler->Update();
+      const vtkIdType points = sampler->GetOutput()->GetNumberOfPoints();
+      Check(messages->ErrorCount == 0, std::string(c.What) + ": no error" + name);
+      const bool poissonPoint =
+        method == vtkErrorDiffusionSampler::METHOD_POISSON_DISK && c.Scale == 1e-6 && points == 1;
+      if (*c.Why && !poissonPoint)
+      {
+        Check(points == 0 && messages->WarningCount == 1 &&
+            messages->Warnings.find(c.Why) != std::string::npos &&
+            messages->Warnings.find("no points were drawn") != std::string::npos,
+          std::string(c.What) + ": one warning saying why there are no points, got '" +
+            messages->Warnings + "'" + name);
+      }
+      else
+      {
+        Check(points > 0 && messages->WarningCount == 0,
+          std::string(c.What) + ": points and no warning, got '" + messages->Warnings + "'" + name);
+      }
+    }
+  }
   return Summary("TestErrorDiffusionSamplerBadInput");
 }

@@ -132,5 +132,6 @@ int main()
   CheckEmptyAndSaturated<vtkPoissonDiskKernel>("vtkPoissonDiskKernel", mask);
   CheckDeterminism<vtkPoissonDiskKernel>("vtkPoissonDiskKernel", MakeRamp(32));
   CheckBadInput<vtkPoissonDiskKernel>("vtkPoissonDiskKernel");
+  CheckProgress<vtkPoissonDiskKernel>("vtkPoissonDiskKernel");
   return Summary("TestPoissonDiskKernel");
 }

@@ -94,5 +94,6 @@ int main()
   CheckDeterminism<vtkWeightedSampleEliminationKernel>(
     "vtkWeightedSampleEliminationKernel", MakeRamp(32));
   CheckBadInput<vtkWeightedSampleEliminationKernel>("vtkWeightedSampleEliminationKernel");
+  CheckProgress<vtkWeightedSampleEliminationKernel>("vtkWeightedSampleEliminationKernel");
   return Summary("TestWeightedSampleEliminationKernel");
 }

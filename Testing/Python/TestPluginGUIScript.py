@@ -144,7 +144,7 @@ try:
     AssignViewToLayout(second, GetLayout(view), 0)
     second_display = Show(spectrum, second)
     runs = []
-    result["expected_messages"] = ["has no points", "NumberOfPoints 0"]
+    result["expected_messages"] = ["has no points", "NumberOfPoints is 0"]
     for points in (0, 7000, 0, 9000):
         sampler.NumberOfPoints = points
         Render(chart)
