@@ -3,6 +3,8 @@
 // See bluenoise_messages.h.
 #include "bluenoise_messages.h"
 
+#include "vtkBlueNoiseVolumeFileCheck.h"
+
 #include "vtkCallbackCommand.h"
 #include "vtkNew.h"
 #include "vtkObject.h"
@@ -11,19 +13,7 @@ namespace bluenoise
 {
 std::string PlainMessage(const char* message)
 {
-  std::string text = message ? message : "";
-  // VTK's macros: "<kind>: In <file>, line <n>\n<Class> (<address>): <text>\n\n".
-  const size_t line = text.find(", line ");
-  const size_t newline = line == std::string::npos ? line : text.find('\n', line);
-  if (newline != std::string::npos)
-  {
-    const size_t close = text.find("): ", newline);
-    text = text.substr(close == std::string::npos ? newline + 1 : close + 3);
-  }
-  const size_t first = text.find_first_not_of(" \t\r\n");
-  const size_t last = text.find_last_not_of(" \t\r\n");
-  text = first == std::string::npos ? std::string() : text.substr(first, last - first + 1);
-  return text.empty() ? std::string("unknown error") : text;
+  return vtkBlueNoiseVolumeFileCheck::PlainMessage(message);
 }
 
 VTKMessages::~VTKMessages()

@@ -83,19 +83,8 @@ public:
 private:
   static void Record(vtkObject*, unsigned long, void* clientData, void* callData)
   {
-    std::string text = callData ? static_cast<const char*>(callData) : "";
-    const size_t line = text.find(", line ");
-    const size_t newline = line == std::string::npos ? line : text.find('\n', line);
-    if (newline != std::string::npos)
-    {
-      const size_t close = text.find("): ", newline);
-      text = text.substr(close == std::string::npos ? newline + 1 : close + 3);
-    }
-    const size_t first = text.find_first_not_of(" \t\r\n");
-    const size_t last = text.find_last_not_of(" \t\r\n");
-    text = first == std::string::npos ? std::string("unknown error")
-                                      : text.substr(first, last - first + 1);
-    static_cast<ErrorCollector*>(clientData)->Errors.push_back(text);
+    static_cast<ErrorCollector*>(clientData)->Errors.push_back(
+      vtkBlueNoiseVolumeFileCheck::PlainMessage(static_cast<const char*>(callData)));
   }
   std::vector<vtkObject*> Objects;
   std::vector<unsigned long> Tags;

@@ -175,3 +175,20 @@ bool vtkBlueNoiseVolumeFileCheck::DataFileSize(
   available = static_cast<double>(size) - offset;
   return true;
 }
+
+//------------------------------------------------------------------------------
+std::string vtkBlueNoiseVolumeFileCheck::PlainMessage(const char* message)
+{
+  std::string text = message ? message : "";
+  const size_t line = text.find(", line ");
+  const size_t newline = line == std::string::npos ? line : text.find('\n', line);
+  if (newline != std::string::npos)
+  {
+    const size_t close = text.find("): ", newline);
+    text = text.substr(close == std::string::npos ? newline + 1 : close + 3);
+  }
+  const size_t first = text.find_first_not_of(" \t\r\n");
+  const size_t last = text.find_last_not_of(" \t\r\n");
+  text = first == std::string::npos ? std::string() : text.substr(first, last - first + 1);
+  return text.empty() ? std::string("unknown error") : text;
+}

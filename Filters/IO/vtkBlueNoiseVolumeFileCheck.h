@@ -75,6 +75,13 @@ public:
 
   /// A number for messages (15 significant digits).
   static std::string Number(double value);
+
+  /**
+   * The text of a VTK error or warning event without what the macros put
+   * before it ("<kind>: In <file>, line <n>\n<Class> (<address>): "), trimmed;
+   * "unknown error" when nothing is left.
+   */
+  static std::string PlainMessage(const char* message);
 };
 
 #endif

@@ -27,7 +27,7 @@ import xml.etree.ElementTree as ET
 
 sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "Python"))
 from bluenoise_testing import check, finish  # noqa: E402
-from paraview_gui import complaints, run_paraview  # noqa: E402
+from paraview_gui import add_paraview_arguments, complaints, run_paraview  # noqa: E402
 
 PANEL = ("pqClientMainWindow/propertiesDock/propertiesPanel/scrollArea/qt_scrollarea_viewport/"
          "scrollAreaWidgetContents/PropertiesFrame/ProxyPanel")
@@ -86,18 +86,13 @@ def write_events(events, path):
 
 def main():
     parser = argparse.ArgumentParser()
-    parser.add_argument("--paraview", required=True)
-    parser.add_argument("--plugin-dir", required=True)
-    parser.add_argument("--plugin-name", default="BlueNoiseSampling")
-    parser.add_argument("--out", required=True)
+    add_paraview_arguments(parser)
     parser.add_argument("--script")
     parser.add_argument("--panel-widgets", nargs="+")
     parser.add_argument("--set", action="append", default=[], metavar="PROXY.PROPERTY=TEXT",
                         help="with --panel-widgets: a value typed in before Apply")
     parser.add_argument("--data-dir", default="")
     parser.add_argument("--baseline-dir", default="")
-    parser.add_argument("--xvfb-run", default=shutil.which("xvfb-run") or "")
-    parser.add_argument("--timeout", type=float, default=240)
     args = parser.parse_args()
     if os.path.isdir(args.out):
         shutil.rmtree(args.out)

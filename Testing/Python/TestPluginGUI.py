@@ -18,7 +18,7 @@ import os
 import shutil
 
 from bluenoise_testing import check, finish
-from paraview_gui import complaints, run_paraview
+from paraview_gui import add_paraview_arguments, complaints, run_paraview
 
 
 def image_stats(path):
@@ -46,12 +46,7 @@ def image_stats(path):
 
 def main():
     parser = argparse.ArgumentParser()
-    parser.add_argument("--paraview", required=True)
-    parser.add_argument("--plugin-dir", required=True)
-    parser.add_argument("--plugin-name", default="BlueNoiseSampling")
-    parser.add_argument("--out", required=True)
-    parser.add_argument("--xvfb-run", default=shutil.which("xvfb-run") or "")
-    parser.add_argument("--timeout", type=float, default=240)
+    add_paraview_arguments(parser)
     args = parser.parse_args()
 
     script = os.path.join(os.path.dirname(os.path.abspath(__file__)), "TestPluginGUIScript.py")

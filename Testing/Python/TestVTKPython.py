@@ -329,7 +329,7 @@ s.SetNumberOfPoints(-3)
 s.SetNumberOfSlabs(0)
 check((s.GetDensityMapping(), s.GetComponent(), s.GetWarmUpLayers(), s.GetParameterSet(), s.GetDensityScale(),
        s.GetModulationScale(), s.GetSeed(), s.GetNumberOfPoints(), s.GetNumberOfSlabs())
-      == (2, -1, 4096, 0, 0.0, 2.0, 0, 0, 1), "clamped setters clamp")
+      == (s.DENSITY_COLOR_MAP_OPACITY, -1, 4096, 0, 0.0, 2.0, 0, 0, 1), "clamped setters clamp")
 
 sp = vtkBlueNoiseSpectrum()
 sdefaults = {"Weight": 0.02, "UseInputGrid": True, "GridDimensions": (64, 64, 64),

@@ -5,6 +5,7 @@ event-playback tests of Testing/GUI): one process group, a timeout that ends
 xvfb-run, Xvfb and paraview together, and the lines of its output that are a
 warning or an error."""
 import os
+import shutil
 import signal
 import subprocess
 import sys
@@ -68,3 +69,13 @@ def run_paraview(paraview_args, out, timeout, xvfb_run, env_extra=None):
     output = output.decode(errors="replace")
     print("---- paraview output ----\n" + output.rstrip() + "\n-------------------------", flush=True)
     return returncode, output
+
+
+def add_paraview_arguments(parser):
+    """The options every GUI driver takes: the program, the plugin, the output folder."""
+    parser.add_argument("--paraview", required=True)
+    parser.add_argument("--plugin-dir", required=True)
+    parser.add_argument("--plugin-name", default="BlueNoiseSampling")
+    parser.add_argument("--out", required=True)
+    parser.add_argument("--xvfb-run", default=shutil.which("xvfb-run") or "")
+    parser.add_argument("--timeout", type=float, default=240)
