@@ -78,6 +78,7 @@ Every image is taken after checking that the transfer functions are still the
 ones set here (ColorBy() would rescale them to the particles' value range).
 """
 import argparse
+import ctypes
 import math
 import os
 import shutil
@@ -548,6 +549,10 @@ if __name__ == "__main__":
     status = main()
     sys.stdout.flush()
     sys.stderr.flush()
+    # From ParaView 5.13, pvbatch prints through C stdio once paraview.simple is
+    # loaded, which os._exit does not flush: without this the output is lost
+    # when it is not a terminal.
+    ctypes.CDLL(None).fflush(None)
     # Leave without ParaView's teardown: under xvfb-run, pvbatch 5.11 with Mesa
     # sometimes dies in it (GLXBadContext, SIGABRT) after all the work is done,
     # which would turn a finished run into a failure.

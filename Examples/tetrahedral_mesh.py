@@ -113,7 +113,7 @@ import time
 import numpy as np
 
 from vtkmodules.util.numpy_support import numpy_to_vtk, vtk_to_numpy
-from vtkmodules.vtkCommonCore import vtkIdTypeArray, vtkPoints
+from vtkmodules.vtkCommonCore import vtkIdTypeArray, vtkPoints, vtkVersion
 from vtkmodules.vtkCommonDataModel import (
     VTK_TETRA,
     vtkCellArray,
@@ -286,11 +286,32 @@ def points_of(data):
     return vtk_to_numpy(data.GetPoints().GetData()).astype(np.float64)
 
 
+# vtkUnstructuredGrid.GetCellTypesArray() is deprecated in VTK 9.6 and returns None there; its
+# successor GetCellTypes() (an array of one type per cell only from 9.6 on) may be an implicit
+# array that numpy cannot view.
+VTK_9_6 = (vtkVersion.GetVTKMajorVersion(), vtkVersion.GetVTKMinorVersion()) >= (9, 6)
+
+
+def cell_types(grid):
+    """The VTK cell type of each cell of an unstructured grid, as a numpy array."""
+    n = grid.GetNumberOfCells()
+    if n == 0:
+        return np.zeros(0, dtype=np.uint8)
+    array = grid.GetCellTypes() if VTK_9_6 else grid.GetCellTypesArray()
+    try:
+        types = vtk_to_numpy(array)
+        if len(types) == n:
+            return types
+    except (TypeError, ValueError, AttributeError):
+        pass
+    return np.array([grid.GetCellType(i) for i in range(n)], dtype=np.uint8)
+
+
 def tets_of(grid):
     """The (m, 4) vertex ids of a grid made of tetrahedra only."""
     if grid.GetNumberOfCells() == 0:
         return np.zeros((0, 4), dtype=np.int64)
-    types = vtk_to_numpy(grid.GetCellTypesArray())
+    types = cell_types(grid)
     if not np.all(types == VTK_TETRA):
         raise ValueError("the grid has cells other than tetrahedra")
     return vtk_to_numpy(grid.GetCells().GetConnectivityArray()).astype(np.int64).reshape(-1, 4)
@@ -423,7 +444,7 @@ def tetrahedralize(points_pd, image, array, g, restrict=DEFAULT_RESTRICT,
         raw = dl.GetOutput()
         if raw.GetNumberOfPoints() != n:
             raise RuntimeError("vtkDelaunay3D changed the points")
-        types = vtk_to_numpy(raw.GetCellTypesArray()) if raw.GetNumberOfCells() else np.zeros(0)
+        types = cell_types(raw)
         conn = raw.GetCells()
         offs = vtk_to_numpy(conn.GetOffsetsArray()).astype(np.int64)
         ids = vtk_to_numpy(conn.GetConnectivityArray()).astype(np.int64)

@@ -5,10 +5,11 @@
 # build output goes to stderr. Used by main.sh and quality-report.sh.
 set -euo pipefail
 root="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
+source "$root/scripts/common.sh"
 {
   bash "$root/scripts/install-deps.sh"
   cmake -S "$root" -B "$root/_build/main" -G Ninja -DCMAKE_BUILD_TYPE=Release \
-    -DParaView_DIR=/usr/lib/x86_64-linux-gnu/cmake/paraview-5.11 \
+    -DParaView_DIR="$(bluenoise_paraview_dir)" \
     -DBUILD_TESTING=OFF -DBLUENOISE_BUILD_BENCHMARKS=OFF
   cmake --build "$root/_build/main" -j "$(nproc)"
 } >&2

@@ -26,7 +26,10 @@
 set -euo pipefail
 root="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
 variant="${1:?usage: sanitize.sh asan|tsan}"
-paraview_dir=/usr/lib/x86_64-linux-gnu/cmake/paraview-5.11
+source "$root/scripts/common.sh"
+paraview_dir="$(bluenoise_paraview_dir)"
+# clang-14 on bookworm, clang-19 on trixie (scripts/install-deps.sh)
+clang="${BLUENOISE_CLANG_VERSION:-$(bluenoise_clang_version)}"
 jobs="${BLUENOISE_JOBS:-$(nproc)}"
 dir="$root/_build/$variant"
 supp="$root/Testing/Sanitizers"
@@ -35,7 +38,7 @@ export UBSAN_OPTIONS="halt_on_error=1:print_stacktrace=1:suppressions=$supp/ubsa
 
 configure() { # cmake args...
   cmake -S "$root" -B "$dir" -G Ninja -DCMAKE_BUILD_TYPE=RelWithDebInfo \
-    -DCMAKE_C_COMPILER=clang-14 -DCMAKE_CXX_COMPILER=clang++-14 \
+    -DCMAKE_C_COMPILER=clang-$clang -DCMAKE_CXX_COMPILER=clang++-$clang \
     -DBLUENOISE_VTK_ONLY=ON -DVTK_DIR="$paraview_dir/vtk" "$@"
 }
 
@@ -44,7 +47,7 @@ case "$variant" in
     configure -DBLUENOISE_FUZZ=ON -DBLUENOISE_FUZZ_SECONDS="${BLUENOISE_FUZZ_SECONDS:-60}"
     cmake --build "$dir" -j "$jobs"
     asan="check_initialization_order=1:strict_init_order=1:detect_stack_use_after_return=1"
-    runtime="$(clang++-14 -print-file-name=libclang_rt.asan-x86_64.so)"
+    runtime="$(clang++-$clang -print-file-name=libclang_rt.asan-x86_64.so)"
     # Left out, as they cost minutes under ASan and run in the other builds:
     # label large (2^31 voxels, over 8 minutes here) and benchmark (smoke runs
     # of 256^3 volumes, the module code the tests cover).

@@ -2,19 +2,34 @@
 # SPDX-FileCopyrightText: Copyright (c) 2025-2026 the BlueNoiseSampling contributors
 # SPDX-License-Identifier: BSD-3-Clause
 # Installs what is needed, builds and runs the whole test suite:
-#   1. against the ParaView 5.11 SDK (module, plugin, Python, all tests);
+#   1. against the host's ParaView SDK (module, plugin, Python, all tests);
 #   2. VTK-only (no ParaView plugin) against ParaView's VTK through VTK_DIR;
-#   3. VTK-only against a real VTK 9.1 (Debian's, unpacked into _build/);
+#   3. VTK-only against a real VTK 9.1 (Debian 12's, unpacked into _build/;
+#      on a Debian 12 host only);
 #   4. the sanitizer builds (scripts/sanitize.sh): clang ASan+UBSan with the whole
 #      suite of a VTK-only build and its libFuzzer targets (about a minute each),
-#      and ThreadSanitizer on the threaded tests.
+#      and ThreadSanitizer on the threaded tests;
+#   5. the whole suite against the SDK of each newer Debian release, in a chroot
+#      of it (scripts/sdk-chroot.sh, made on first use and then reused): Debian
+#      13 (ParaView 5.13) and unstable (ParaView 6.1) from a Debian 12 host.
+#      BLUENOISE_SDKS names them instead (e.g. "sid", or "" for none). The
+#      chroots are set up in the background during stages 1-4; a stage's time
+#      counts what it waited for its chroot.
 # Each stage's wall time is printed at the end.
 # Usage: bash scripts/test.sh   (from anywhere; run as root or with sudo rights)
 set -euo pipefail
 root="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
+source "$root/scripts/common.sh"
 bash "$root/scripts/install-deps.sh"
 
-paraview_dir=/usr/lib/x86_64-linux-gnu/cmake/paraview-5.11
+paraview_dir="$(bluenoise_paraview_dir)"
+host="$(bash "$root/scripts/install-deps.sh" --release-name)"
+case "$host" in
+  bookworm) default_sdks="trixie sid" ;;
+  trixie) default_sdks="sid" ;;
+  *) default_sdks="" ;;
+esac
+sdks="${BLUENOISE_SDKS-$default_sdks}"
 jobs="${BLUENOISE_JOBS:-$(nproc)}"
 status=0
 timings=()
@@ -47,11 +62,34 @@ run_vtk91() {
   )
 }
 
+# The chroots of the newer SDKs are made (or brought up to date) in the
+# background while the host's stages run: mostly downloads and unpacking,
+# which the compiler-bound stages leave room for.
+declare -A sdk_setup
+for sdk in $sdks; do
+  mkdir -p "$root/_build"
+  bash "$root/scripts/sdk-chroot.sh" "$sdk" --setup-only >"$root/_build/sdk-$sdk-setup.log" 2>&1 &
+  sdk_setup[$sdk]=$!
+done
+run_sdk() { # release: waits for its chroot, then builds and tests in it
+  local ok=0
+  wait "${sdk_setup[$1]}" || ok=$?
+  echo "=== sdk-$1: chroot set-up ($root/_build/sdk-$1-setup.log)"
+  tail -n 5 "$root/_build/sdk-$1-setup.log"
+  [ "$ok" = 0 ] || return "$ok"
+  bash "$root/scripts/sdk-chroot.sh" "$1"
+}
+
 stage paraview run_suite paraview -DParaView_DIR="$paraview_dir"
 stage vtk-only run_suite vtk-only -DBLUENOISE_VTK_ONLY=ON -DVTK_DIR="$paraview_dir/vtk"
-stage vtk-9.1 run_vtk91
+if [ "$host" = bookworm ]; then
+  stage vtk-9.1 run_vtk91 # Debian 12's packages
+fi
 stage asan bash "$root/scripts/sanitize.sh" asan
 stage tsan bash "$root/scripts/sanitize.sh" tsan
+for sdk in $sdks; do
+  stage "sdk-$sdk" run_sdk "$sdk"
+done
 echo "=== stage times"
 printf '%s\n' "${timings[@]}"
 exit $status

@@ -10,12 +10,41 @@
 #include <cmath>
 #include <cstdlib>
 #include <iostream>
+#include <memory>
 #include <sstream>
 
 namespace bluenoise
 {
 namespace
 {
+// The help's layout kept across CLI11 versions. CLI11 2.5 and later reflow the
+// description and the footer as paragraphs (the footer's indented table of
+// files would lose its indentation) and print the usage line without its
+// "Usage:" label; earlier versions print both as written, with the label.
+class HelpFormatter : public CLI::Formatter
+{
+public:
+  HelpFormatter()
+  {
+#if CLI11_VERSION_MAJOR > 2 || (CLI11_VERSION_MAJOR == 2 && CLI11_VERSION_MINOR >= 5)
+    this->enable_description_formatting(false);
+    this->enable_footer_formatting(false);
+#endif
+  }
+
+  std::string make_usage(const CLI::App* app, std::string name) const override
+  {
+    std::string usage = CLI::Formatter::make_usage(app, name);
+    const std::string label = this->get_label("Usage") + ":";
+    if (usage.find(label) == std::string::npos)
+    {
+      usage.erase(0, usage.find_first_not_of('\n'));
+      usage.insert(0, label + " ");
+    }
+    return usage;
+  }
+};
+
 std::string Quoted(const std::string& text)
 {
   return "'" + text + "'";
@@ -98,7 +127,9 @@ CommandLine::CommandLine(const std::string& program, const std::string& descript
   : Program(program)
   , App(new CLI::App(description, program))
 {
-  this->App->get_formatter()->column_width(28);
+  auto formatter = std::make_shared<HelpFormatter>();
+  formatter->column_width(28);
+  this->App->formatter(formatter);
 }
 
 CommandLine::~CommandLine() = default;

@@ -2,7 +2,6 @@
 // SPDX-License-Identifier: BSD-3-Clause
 #include "vtkBlueNoiseSpectrumKernel.h"
 
-#include "vtkSMPThreadLocal.h"
 #include "vtkSMPTools.h"
 
 #include <fftw3.h>
@@ -200,8 +199,7 @@ private:
   std::map<std::array<int, 3>, TransformPlans> Plans;
 };
 
-// One thread's block of ColumnBlock columns along z, allocated on first use
-// (a copy, as vtkSMPThreadLocal makes of its exemplar, starts without one).
+// One task's block of ColumnBlock columns along z, allocated on first use.
 // The last block of a pass transforms some stale lanes, so the block starts
 // zeroed to keep them defined.
 class ColumnScratch
@@ -209,8 +207,8 @@ class ColumnScratch
 public:
   ColumnScratch() = default;
   ~ColumnScratch() { fftw_free(this->Block); }
-  ColumnScratch(const ColumnScratch&) {}
-  ColumnScratch& operator=(const ColumnScratch&) { return *this; }
+  ColumnScratch(const ColumnScratch&) = delete;
+  ColumnScratch& operator=(const ColumnScratch&) = delete;
 
   fftw_complex* Get(int lz)
   {
@@ -881,12 +879,16 @@ void vtkBlueNoiseSpectrumKernel::TransformColumns(double invN)
   const std::size_t columns = this->HalfSize / lz;
   const vtkIdType blocks = static_cast<vtkIdType>((columns + ColumnBlock - 1) / ColumnBlock);
   const bool first = (this->Realizations == 0);
-  vtkSMPThreadLocal<ColumnScratch> scratch;
+  // A block per task, not a vtkSMPThreadLocal one per thread: a task covers
+  // about ValuesPerTask values, so its one block costs little, and GCC 14
+  // reported a false -Wstringop-overflow in the thread-local's constructor
+  // (VTK's Sequential backend) inlined here.
   const vtkIdType grain = std::max<vtkIdType>(1, ValuesPerTask / (ColumnBlock * lz));
   vtkSMPTools::For(0, blocks, grain,
     [&](vtkIdType b0, vtkIdType b1)
     {
-      fftw_complex* block = scratch.Local().Get(lz);
+      ColumnScratch scratch;
+      fftw_complex* block = scratch.Get(lz);
       for (vtkIdType b = b0; b < b1; ++b)
       {
         const std::size_t c0 = static_cast<std::size_t>(b) * ColumnBlock;

@@ -468,6 +468,11 @@ void SetSpectrumWholeExtent(vtkInformation* imageInfo, const int dims[3])
   }
 }
 
+// The spectrum image lives in frequency space: its axes are the frequency
+// axes, whatever the direction of an input image. Set explicitly: from VTK 9.3
+// an image output takes the input image's direction unless the filter sets it.
+const double SpectrumImageDirection[9] = { 1, 0, 0, 0, 1, 0, 0, 0, 1 };
+
 bool FillSpectrumImage(vtkBlueNoiseSpectrumKernel& kernel, const int dims[3], vtkImageData* image)
 {
   double* values = kernel.NewCenteredPowerSpectrum();
@@ -586,6 +591,7 @@ int vtkBlueNoiseSpectrum::RequestInformation(
     imageInfo->Set(vtkDataObject::ORIGIN(), origin, 3);
     vtkDataObject::SetPointDataActiveScalarInfo(imageInfo, VTK_DOUBLE, 1);
   }
+  imageInfo->Set(vtkDataObject::DIRECTION(), SpectrumImageDirection, 9);
   imageInfo->Set(vtkStreamingDemandDrivenPipeline::WHOLE_EXTENT(), extent, 6);
   return 1;
 }
@@ -668,6 +674,7 @@ int vtkBlueNoiseSpectrum::RequestData(
   vtkImageData* image = vtkImageData::GetData(outputVector, 1);
   table->Initialize();
   image->Initialize();
+  image->SetDirectionMatrix(SpectrumImageDirection);
   this->NumberOfTransformedRealizations = 0;
   // Bad input is reported (vtkErrorMacro) and leaves empty outputs, yet the
   // execution succeeds: a failed one would leave what is downstream (the

@@ -15,6 +15,7 @@ requested number of particles, none where the opacity is 0, the particles
 shown jittered by less than half a voxel, and writes a screenshot. Prints MACRO CHECKS PASSED when every check passed.
 """
 import argparse
+import ctypes
 import math
 import os
 import sys
@@ -101,5 +102,9 @@ def main():
 if __name__ == "__main__":
     status = main()
     sys.stdout.flush()
+    # From ParaView 5.13, pvbatch prints through C stdio once paraview.simple is
+    # loaded, which os._exit does not flush: without this the output is lost
+    # when it is not a terminal.
+    ctypes.CDLL(None).fflush(None)
     # Skip ParaView's teardown (it sometimes aborts under xvfb-run with Mesa).
     os._exit(status)

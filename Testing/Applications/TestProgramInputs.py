@@ -17,6 +17,7 @@ import argparse
 import gzip
 import math
 import os
+import re
 import shutil
 import struct
 import subprocess
@@ -503,7 +504,14 @@ def help_prints_only(ctx):
         p = ctx.run(program, '--help', timeout=10)
         check(p.returncode == 0, '%s --help: exit status %d' % (program, p.returncode))
         check('Usage:' in p.stdout and p.stderr == '', '%s --help: not only the usage' % program)
+        check(re.search(r'^Usage: bluenoise-%s \[OPTIONS\]' % program, p.stdout, re.M),
+              '%s --help: no usage line' % program)
         check(sorted(os.listdir(ctx.work)) == before, '%s --help wrote files' % program)
+        if program == 'sample':
+            # The footer's table of files keeps its layout (CLI11 >= 2.5 would reflow it).
+            check('\n  samples.vtp   the points' in p.stdout and
+                  '\n                --samples NAME.csv' in p.stdout,
+                  'sample --help: the footer lost its indentation')
 
 
 # --- output ----------------------------------------------------------------------------

@@ -77,7 +77,7 @@ def main():
                   "%s: %d samples outside the restricted mesh" % (what, result["unused_samples"]))
 
             # A valid mesh.
-            types = vtk_to_numpy(grid.GetCellTypesArray())
+            types = tm.cell_types(grid)
             check(grid.GetNumberOfCells() > 3 * len(mp) and np.all(types == tm.VTK_TETRA),
                   "%s: %d cells, all tetrahedra" % (what, grid.GetNumberOfCells()))
             P = mp.astype(np.float64)

@@ -242,6 +242,20 @@ void BM_FFTW3D(benchmark::State& state)
 }
 #endif
 
+// Whether a run ended in an error: Google Benchmark 1.8 replaced the bool
+// Run::error_occurred with Run::skipped (an enum, zero for a run that ran).
+// The overload that compiles for the installed version is the one chosen.
+template <typename R>
+auto RunFailed(const R& run, int) -> decltype(static_cast<bool>(run.error_occurred))
+{
+  return static_cast<bool>(run.error_occurred);
+}
+template <typename R>
+auto RunFailed(const R& run, long) -> decltype(static_cast<bool>(run.skipped))
+{
+  return static_cast<bool>(run.skipped);
+}
+
 // The console table, and the real times kept by name for the ratios.
 class RatioReporter : public benchmark::ConsoleReporter
 {
@@ -250,7 +264,7 @@ public:
   {
     for (const Run& run : runs)
     {
-      if (!run.error_occurred && run.run_type == Run::RT_Iteration)
+      if (!RunFailed(run, 0) && run.run_type == Run::RT_Iteration)
       {
         // "BM_Stage/L/threads", without the "/real_time" the name ends with.
         std::string name = run.benchmark_name();

@@ -4,12 +4,15 @@
 // grid field data (rotated, offset extent), an image mask (uint8, a converted
 // integer type, cell data), averaged realizations (two connections, a
 // multiblock), a grid built over the bounds, the spectrum image's geometry and
-// the outside-points warning.
+// the outside-points warning. A rotated input image (directly, and through the
+// sampler) gives an axis-aligned spectrum image, the sampler's points staying in
+// world coordinates.
 #include "TestBlueNoiseSpectrumUtilities.h"
 
 #include "vtkBlueNoiseSpectrum.h"
 #include "vtkCellData.h"
 #include "vtkDoubleArray.h"
+#include "vtkErrorDiffusionSampler.h"
 #include "vtkImageData.h"
 #include "vtkInformation.h"
 #include "vtkIntArray.h"
@@ -168,6 +171,27 @@ void CheckImage(vtkImageData* image, const int dims[3], const std::vector<double
   Check(same, what + ": Power differs from the kernel's centered spectrum");
   Check(power->GetComponent(image->ComputePointId(c), 0) == 0.0, what + ": DC is not 0");
 }
+
+// The spectrum image's axes are the frequency axes, whatever the input's
+// direction: an identity direction on the data and in the output information.
+void CheckAxisAligned(vtkBlueNoiseSpectrum* filter, const std::string& what)
+{
+  Check(filter->GetSpectrumImageOutput()->GetDirectionMatrix()->IsIdentity(),
+    what + ": the spectrum image is rotated");
+  double direction[9] = { 0, 0, 0, 0, 0, 0, 0, 0, 0 };
+  vtkInformation* info = filter->GetOutputInformation(1);
+  if (Check(info->Has(vtkDataObject::DIRECTION()),
+        what + ": no DIRECTION in the spectrum image's information"))
+  {
+    info->Get(vtkDataObject::DIRECTION(), direction);
+    bool identity = true;
+    for (int e = 0; e < 9; ++e)
+    {
+      identity = identity && direction[e] == (e % 4 == 0 ? 1.0 : 0.0);
+    }
+    Check(identity, what + ": the spectrum image's information has a rotated DIRECTION");
+  }
+}
 }
 
 int main()
@@ -214,6 +238,43 @@ int main()
     Check(wholeExtent[1] == Dims[0] - 1 && wholeExtent[3] == Dims[1] - 1 &&
         wholeExtent[5] == Dims[2] - 1,
       "uint8 image: RequestInformation announces a wrong WHOLE_EXTENT");
+    CheckAxisAligned(filter, "uint8 image (rotated)");
+  }
+
+  // A rotated image through the sampler: points on the image's voxel centers in
+  // world coordinates, and the same axis-aligned spectrum of their grid.
+  {
+    vtkSmartPointer<vtkImageData> image = MaskImage<vtkUnsignedCharArray>(mask, false);
+    vtkNew<vtkErrorDiffusionSampler> sampler;
+    sampler->SetInputData(image);
+    sampler->SetDensityMappingToIdentity();
+    vtkNew<vtkBlueNoiseSpectrum> filter;
+    filter->SetInputConnection(sampler->GetOutputPort());
+    filter->Update();
+    vtkPolyData* points = sampler->GetOutput();
+    const vtkIdType n = points->GetNumberOfPoints();
+    int offCenter = 0;
+    for (vtkIdType p = 0; p < n; ++p)
+    {
+      double x[3], ijk[3];
+      points->GetPoint(p, x);
+      image->TransformPhysicalPointToContinuousIndex(x, ijk);
+      for (int a = 0; a < 3; ++a)
+      {
+        const double i = std::round(ijk[a]);
+        offCenter += (std::abs(ijk[a] - i) > 1e-4 || i < Lower[a] || i >= Lower[a] + Dims[a]);
+      }
+    }
+    Check(n > 0 && offCenter == 0,
+      "sampler on a rotated image: " + Str(offCenter) + " coordinates of " + Str(n) +
+        " points off the image's voxel centers in world coordinates");
+    Result r;
+    if (ResultFromTable(filter->GetOutput(), r))
+    {
+      CheckClose(r.NumberOfPoints, static_cast<double>(n), 0.0, "sampler on a rotated image: N");
+    }
+    CheckImageGeometry(filter->GetSpectrumImageOutput(), Dims, "sampler on a rotated image");
+    CheckAxisAligned(filter, "sampler on a rotated image");
   }
   {
     vtkNew<vtkBlueNoiseSpectrum> filter;
