@@ -635,9 +635,11 @@ void vtkErrorDiffusionPointAssembler::AddLayer(
 //------------------------------------------------------------------------------
 vtkIdType vtkErrorDiffusionPointAssembler::RemoveLast(vtkIdType n)
 {
+  // The arrays keep their tuples until End trims them to the total: shrinking
+  // them here would free a block array's memory through VTK (to nothing, when
+  // all go), which End's trim gives back its own way.
   n = std::min(std::max<vtkIdType>(n, 0), this->Total);
   this->Total -= n;
-  this->Reserve(this->Total);
   return n;
 }
 
