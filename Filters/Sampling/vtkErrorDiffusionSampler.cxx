@@ -186,6 +186,7 @@ public:
   std::vector<Step> Steps;
   size_t Current = 0;
   bool Running = false;
+  bool Executing = false; // inside RequestData (see RequestData)
   bool NeedsStatistics = false; // every piece takes part, even one without layers
   bool Relaxing = false;        // the relaxation holds layers back
 
@@ -287,9 +288,12 @@ int vtkErrorDiffusionSampler::RequestInformation(
   // A new pass of the pipeline (a run's steps never call for one): a run left
   // unfinished, its input having failed between steps, is dropped, so that
   // the plan is made again for this input.
-  this->Internals->Running = false;
-  this->Internals->Points = nullptr;
-  this->Internals->Mask = nullptr;
+  if (!this->Internals->Executing)
+  {
+    this->Internals->Running = false;
+    this->Internals->Points = nullptr;
+    this->Internals->Mask = nullptr;
+  }
   const int empty[6] = { 0, -1, 0, -1, 0, -1 };
   maskInfo->CopyEntry(inInfo, wholeKey);
   maskInfo->CopyEntry(inInfo, vtkDataObject::ORIGIN());
@@ -326,6 +330,10 @@ bool vtkErrorDiffusionSampler::ReduceStatistics(vtkSamplingBudget&)
 int vtkErrorDiffusionSampler::RequestUpdateExtent(
   vtkInformation* request, vtkInformationVector** inputVector, vtkInformationVector* outputVector)
 {
+  if (this->Internals->Executing)
+  {
+    return 1; // a request from within this execution (see RequestData)
+  }
   // The piece is that of the port asked for; the other port gets the same
   // request, so that asking for it next does not execute the filter again.
   using SDDP = vtkStreamingDemandDrivenPipeline;
@@ -1054,6 +1062,25 @@ bool vtkErrorDiffusionSampler::Advance(vtkImageData* input, vtkInformationVector
 
 //------------------------------------------------------------------------------
 int vtkErrorDiffusionSampler::RequestData(
+  vtkInformation* request, vtkInformationVector** inputVector, vtkInformationVector* outputVector)
+{
+  vtkInternals& running = *this->Internals;
+  if (running.Executing)
+  {
+    // ParaView may process events while this filter reports progress, and a
+    // render they start may ask for this output again before this execution
+    // is over: that request gets the output as it stands; this execution,
+    // its state and its output stay as they are.
+    return 1;
+  }
+  running.Executing = true;
+  const int status = this->Execute(request, inputVector, outputVector);
+  running.Executing = false;
+  return status;
+}
+
+//------------------------------------------------------------------------------
+int vtkErrorDiffusionSampler::Execute(
   vtkInformation* request, vtkInformationVector** inputVector, vtkInformationVector* outputVector)
 {
   vtkImageData* image = vtkImageData::GetData(inputVector[0], 0);

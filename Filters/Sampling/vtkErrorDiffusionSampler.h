@@ -416,6 +416,7 @@ private:
   std::unique_ptr<vtkInternals> Internals;
 
   bool IsAborted();
+  int Execute(vtkInformation*, vtkInformationVector**, vtkInformationVector*);
   bool SamplesCells();
   int ValueMapping() const;
   bool ValidateProperties();
