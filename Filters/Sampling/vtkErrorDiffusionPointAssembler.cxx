@@ -21,6 +21,7 @@
 #include <cstdint>
 #include <cstdlib>
 #include <cstring>
+#include <memory>
 #include <mutex>
 #include <new>
 #include <numeric>
@@ -72,30 +73,29 @@ size_t RoundUpToHugePage(size_t bytes)
   return (bytes + HugePage - 1) / HugePage * HugePage;
 }
 
+using BlockPool = vtkErrorDiffusionBlockPool;
+
 struct Block
 {
   void* Base;      // of the mapping, HugePage longer than the capacity (for the alignment)
   size_t Capacity; // bytes from the data pointer
   size_t Used;     // bytes that may hold pages: the capacity, or up to the trimmed end
+  std::weak_ptr<BlockPool> Pool; // the assembler whose spare the block becomes when freed
 };
 
-// Blocks by data pointer: a pointer not in here is not a block (its array may
-// have been reallocated by VTK since, and the address reused). Never
-// destroyed: an output array may be freed after the library's statics.
-//
-// Freed blocks are kept as spares, their pages lazily given back (MADV_FREE:
-// the kernel takes them when it needs memory, else they stay): ParaView
-// shallow-copies every output after its filter (vtkPVPostFilter), so a
-// re-execution cannot recycle the arrays of the last output, which are freed
-// just after it; the next execution then writes into pages already there
-// instead of faulting in and zeroing fresh ones (at 512^3 and g = 1/2 that
-// cost as much as the scan). At most MaximumSpareBytes() of pages are kept.
+void Unmap(const Block& block)
+{
+  munmap(block.Base, block.Capacity + HugePage);
+}
+
+// The blocks in use, by data pointer: a pointer not in here is not a block
+// (its array may have been reallocated by VTK since, and the address reused).
+// Only live blocks are in here, so it is empty whenever no output array is.
+// Never destroyed: an output array may be freed after the library's statics.
 struct BlockRegistry
 {
   std::mutex Mutex;
   std::unordered_map<void*, Block> Blocks;
-  std::vector<std::pair<void*, Block>> Spares; // oldest first
-  size_t SpareBytes = 0;                       // their Used bytes
 };
 BlockRegistry& Registry()
 {
@@ -103,83 +103,133 @@ BlockRegistry& Registry()
   return *registry;
 }
 
-// A quarter of the machine's memory, at most 4 GiB; none where pages cannot
-// be given back lazily.
-size_t MaximumSpareBytes()
+// An assembler's freed blocks, kept as spares for its next run: ParaView
+// shallow-copies every output after its filter (vtkPVPostFilter), so a
+// re-execution cannot recycle the arrays of the last output, which are freed
+// just after it; the next run then writes into pages already there instead of
+// faulting in and zeroing fresh ones. Their pages are given back lazily
+// (MADV_FREE: the kernel takes them when it needs memory). The pool lives and
+// dies with its assembler (its filter): a block freed after that is unmapped,
+// and so are the spares a run did not take (ReleaseSpares).
+} // anonymous namespace
+
+struct vtkErrorDiffusionBlockPool
 {
+  std::mutex Mutex;
+  std::vector<std::pair<void*, Block>> Spares;
+  size_t SpareBytes = 0; // their Used bytes
+
+  ~vtkErrorDiffusionBlockPool() { this->ReleaseSpares(); }
+
+  // A spare block of at least `bytes` (the smallest); null if none.
+  void* Take(size_t bytes, Block& block)
+  {
+    std::lock_guard<std::mutex> lock(this->Mutex);
+    auto best = this->Spares.end();
+    for (auto it = this->Spares.begin(); it != this->Spares.end(); ++it)
+    {
+      if (it->second.Capacity >= bytes &&
+        (best == this->Spares.end() || it->second.Capacity < best->second.Capacity))
+      {
+        best = it;
+      }
+    }
+    if (best == this->Spares.end())
+    {
+      return nullptr;
+    }
+    void* data = best->first;
+    block = best->second;
+    this->SpareBytes -= block.Used;
+    this->Spares.erase(best);
+    return data;
+  }
+
+  // Keeps a freed block unless the spares would exceed a quarter of the
+  // machine's memory; then it is unmapped.
+  void Keep(void* data, const Block& block)
+  {
+    {
+      std::lock_guard<std::mutex> lock(this->Mutex);
+      if (this->SpareBytes + block.Used <= MaximumSpareBytes())
+      {
 #if defined(MADV_FREE)
-  static const size_t bytes = [] {
-    const long pages = sysconf(_SC_PHYS_PAGES);
-    const long size = sysconf(_SC_PAGESIZE);
-    const size_t memory = pages > 0 && size > 0 ? size_t(pages) * size_t(size) : 0;
-    return std::min(memory / 4, size_t(4) << 30);
-  }();
-  return bytes;
-#else
-  return 0;
+        madvise(data, block.Used, MADV_FREE);
 #endif
-}
+        this->Spares.emplace_back(data, block);
+        this->SpareBytes += block.Used;
+        return;
+      }
+    }
+    Unmap(block);
+  }
 
-// A spare block of at least `bytes` (the smallest), registered again; null if none.
-void* TakeSpare(BlockRegistry& registry, size_t bytes, size_t& capacity)
-{
-  auto best = registry.Spares.end();
-  for (auto it = registry.Spares.begin(); it != registry.Spares.end(); ++it)
+  void ReleaseSpares()
   {
-    if (it->second.Capacity >= bytes &&
-      (best == registry.Spares.end() || it->second.Capacity < best->second.Capacity))
+    std::vector<std::pair<void*, Block>> spares;
     {
-      best = it;
+      std::lock_guard<std::mutex> lock(this->Mutex);
+      spares.swap(this->Spares);
+      this->SpareBytes = 0;
+    }
+    for (const auto& spare : spares)
+    {
+      Unmap(spare.second);
     }
   }
-  if (best == registry.Spares.end())
-  {
-    return nullptr;
-  }
-  void* data = best->first;
-  capacity = best->second.Capacity;
-  registry.SpareBytes -= best->second.Used;
-  registry.Blocks[data] = { best->second.Base, capacity, capacity }; // Trim says what it used
-  registry.Spares.erase(best);
-  return data;
-}
 
-// A block of at least `bytes`; its capacity in `capacity`.
-void* AllocateBlock(size_t bytes, size_t& capacity)
+  // A quarter of the machine's memory; none where pages cannot be given back
+  // lazily.
+  static size_t MaximumSpareBytes()
+  {
+#if defined(MADV_FREE)
+    static const size_t bytes = [] {
+      const long pages = sysconf(_SC_PHYS_PAGES);
+      const long size = sysconf(_SC_PAGESIZE);
+      return pages > 0 && size > 0 ? size_t(pages) * size_t(size) / 4 : 0;
+    }();
+    return bytes;
+#else
+    return 0;
+#endif
+  }
+};
+
+namespace
 {
+
+// A block of at least `bytes` owned by `pool`, its capacity in `capacity`: a
+// spare of the pool, or a fresh mapping.
+void* AllocateBlock(const std::shared_ptr<BlockPool>& pool, size_t bytes, size_t& capacity)
+{
+  Block block;
+  void* data = pool->Take(bytes, block);
+  if (!data)
   {
-    BlockRegistry& registry = Registry();
-    std::lock_guard<std::mutex> lock(registry.Mutex);
-    if (void* spare = TakeSpare(registry, bytes, capacity))
+    capacity = RoundUpToHugePage(bytes);
+    void* base =
+      mmap(nullptr, capacity + HugePage, PROT_READ | PROT_WRITE, MAP_PRIVATE | MAP_ANONYMOUS, -1, 0);
+    if (base == MAP_FAILED)
     {
-      return spare;
+      return nullptr;
     }
+    data = reinterpret_cast<void*>(RoundUpToHugePage(reinterpret_cast<std::uintptr_t>(base)));
+    madvise(data, capacity, MADV_HUGEPAGE); // a hint: failure is harmless
+    block = { base, capacity, capacity, pool };
   }
-  capacity = RoundUpToHugePage(bytes);
-  void* base =
-    mmap(nullptr, capacity + HugePage, PROT_READ | PROT_WRITE, MAP_PRIVATE | MAP_ANONYMOUS, -1, 0);
-  if (base == MAP_FAILED)
-  {
-    return nullptr;
-  }
-  void* data = reinterpret_cast<void*>(RoundUpToHugePage(reinterpret_cast<std::uintptr_t>(base)));
-  madvise(data, capacity, MADV_HUGEPAGE); // a hint: failure is harmless
+  capacity = block.Capacity;
+  block.Used = block.Capacity; // TrimBlock says what is used
   BlockRegistry& registry = Registry();
   std::lock_guard<std::mutex> lock(registry.Mutex);
-  registry.Blocks[data] = { base, capacity, capacity };
+  registry.Blocks[data] = block;
   return data;
 }
 
-void Unmap(const Block& block)
-{
-  munmap(block.Base, block.Capacity + HugePage);
-}
-
-// Keeps the block as a spare when it fits under MaximumSpareBytes() (the
-// oldest spares go first to make room), unmaps it otherwise.
+// The array free function of blocks: the block goes back to its pool when
+// that still exists, else it is unmapped.
 void FreeBlock(void* data)
 {
-  std::vector<Block> unmapped;
+  Block block;
   {
     BlockRegistry& registry = Registry();
     std::lock_guard<std::mutex> lock(registry.Mutex);
@@ -188,28 +238,17 @@ void FreeBlock(void* data)
     {
       return;
     }
-    const Block block = it->second;
+    block = std::move(it->second);
     registry.Blocks.erase(it);
-    if (block.Used > MaximumSpareBytes())
-    {
-      unmapped.push_back(block);
-    }
-    else
-    {
-      while (registry.SpareBytes + block.Used > MaximumSpareBytes())
-      {
-        unmapped.push_back(registry.Spares.front().second);
-        registry.SpareBytes -= registry.Spares.front().second.Used;
-        registry.Spares.erase(registry.Spares.begin());
-      }
-#if defined(MADV_FREE)
-      madvise(data, block.Used, MADV_FREE);
-#endif
-      registry.Spares.emplace_back(data, block);
-      registry.SpareBytes += block.Used;
-    }
   }
-  std::for_each(unmapped.begin(), unmapped.end(), Unmap);
+  if (std::shared_ptr<BlockPool> pool = block.Pool.lock())
+  {
+    pool->Keep(data, block);
+  }
+  else
+  {
+    Unmap(block);
+  }
 }
 
 // Gives back the block's pages past its first `used` bytes (rounded up to
@@ -258,15 +297,27 @@ bool WantsBlock(vtkAbstractArray* array, size_t bytes)
   return bytes >= 4 * HugePage && array->GetDataTypeSize() > 0 &&
     array->HasStandardMemoryLayout() && vtkDataArray::SafeDownCast(array);
 }
+#else
+} // anonymous namespace
+
+struct vtkErrorDiffusionBlockPool // blocks are mapped memory, on Linux only
+{
+  void ReleaseSpares() {}
+};
+
+namespace
+{
 #endif
 
 // Room for up to `tuples` tuples, uninitialized (the array's count means
 // nothing until EnsureTuples sets it). A recycled array keeps its block when
 // that is large enough. The room is a hint: where the address space for all
 // of it cannot be had, a quarter of it is tried, and so on, and EnsureTuples
-// grows the array later.
-void ReserveUninitialized(vtkAbstractArray* array, vtkIdType tuples)
+// grows the array later. New blocks belong to `pool`.
+void ReserveUninitialized(vtkAbstractArray* array, vtkIdType tuples,
+  const std::shared_ptr<vtkErrorDiffusionBlockPool>& pool)
 {
+  (void)pool;
   const int components = std::max(1, array->GetNumberOfComponents());
   const int valueSize = array->GetDataTypeSize();
   for (; tuples > 0; tuples /= 4)
@@ -280,7 +331,7 @@ void ReserveUninitialized(vtkAbstractArray* array, vtkIdType tuples)
       size_t capacity = data ? BlockCapacity(data) : 0;
       if (capacity < bytes)
       {
-        data = AllocateBlock(bytes, capacity);
+        data = AllocateBlock(pool, bytes, capacity);
       }
       if (!data)
       {
@@ -435,7 +486,10 @@ vtkIdType VoxelCount(const int extent[6])
 }
 
 //------------------------------------------------------------------------------
-vtkErrorDiffusionPointAssembler::vtkErrorDiffusionPointAssembler() = default;
+vtkErrorDiffusionPointAssembler::vtkErrorDiffusionPointAssembler()
+  : Pool(std::make_shared<vtkErrorDiffusionBlockPool>())
+{
+}
 
 //------------------------------------------------------------------------------
 vtkErrorDiffusionPointAssembler::~vtkErrorDiffusionPointAssembler() = default;
@@ -471,11 +525,11 @@ void vtkErrorDiffusionPointAssembler::Begin(
   // memory, and End() gives it back. Growing from a small array instead would
   // copy the points and fault in every copy.
   const vtkIdType reserve = std::min<vtkIdType>(VoxelCount(extent), vtkIdType(1) << 28);
-  ReserveUninitialized(this->Coordinates, reserve);
-  ReserveUninitialized(this->Densities, reserve);
+  ReserveUninitialized(this->Coordinates, reserve, this->Pool);
+  ReserveUninitialized(this->Densities, reserve, this->Pool);
   for (vtkAbstractArray* target : this->Targets)
   {
-    ReserveUninitialized(target, reserve);
+    ReserveUninitialized(target, reserve, this->Pool);
   }
   const vtkIdType nx = std::max(0, extent[1] - extent[0] + 1);
   const vtkIdType ny = std::max(0, extent[3] - extent[2] + 1);
@@ -743,11 +797,13 @@ vtkSmartPointer<vtkAbstractArray> vtkErrorDiffusionPointAssembler::TargetFor(
 //------------------------------------------------------------------------------
 void vtkErrorDiffusionPointAssembler::Recycle(vtkPolyData* previous)
 {
-  this->Recycled.clear();
   if (!previous)
   {
+    this->Pool->ReleaseSpares(); // what the run did not take
+    this->Recycled.clear();      // spares for the next run
     return;
   }
+  this->Recycled.clear();
   // Held by `previous` alone: the container by it, the array by the container.
   const auto keep = [this](vtkObject* container, vtkAbstractArray* array, const std::string& role) {
     if (container && container->GetReferenceCount() == 1 && array &&
@@ -818,10 +874,10 @@ vtkSmartPointer<ArrayT> vtkErrorDiffusionPointAssembler::NewOrRecycled(
 vtkSmartPointer<vtkCellArray> vtkErrorDiffusionPointAssembler::MakeVertices(vtkIdType n)
 {
   auto verts = vtkSmartPointer<vtkCellArray>::New();
-  auto fill = [n, &verts](auto offsets, auto connectivity) {
+  auto fill = [this, n, &verts](auto offsets, auto connectivity) {
     using ValueT = typename std::remove_reference<decltype(*offsets->GetPointer(0))>::type;
-    ReserveUninitialized(offsets, n + 1);
-    ReserveUninitialized(connectivity, n);
+    ReserveUninitialized(offsets, n + 1, this->Pool);
+    ReserveUninitialized(connectivity, n, this->Pool);
     offsets->SetNumberOfTuples(n + 1); // SetNumberOfValues would reallocate a larger array
     connectivity->SetNumberOfTuples(n);
     std::iota(offsets->GetPointer(0), offsets->GetPointer(0) + n + 1, ValueT(0));

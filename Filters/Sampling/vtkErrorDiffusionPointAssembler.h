@@ -32,7 +32,11 @@
  * transparent huge pages (most of the cost of fresh memory is page faults);
  * a block keeps its capacity through End() (its pages past the points are
  * given back), so the next run that recycles the array neither copies nor
- * faults in what it had.
+ * faults in what it had. A block freed while its assembler lives is kept
+ * for the assembler's next run (ParaView frees the last output's arrays
+ * only after the next run has started: see Recycle); the spares a run does
+ * not take are unmapped when it ends, and all of them with the assembler, so
+ * no memory outlives the filter that owns the assembler.
  *
  * Layers must come in z order, each once. The image and its arrays are only
  * read, so another thread may read them at the same time.
@@ -45,6 +49,7 @@
 #include "vtkType.h"                   // for vtkIdType
 
 #include <cstdint>
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -56,6 +61,7 @@ class vtkImageData;
 class vtkPointData;
 class vtkPoints;
 class vtkPolyData;
+struct vtkErrorDiffusionBlockPool;
 
 class VTKFILTERSBLUENOISE_EXPORT vtkErrorDiffusionPointAssembler
 {
@@ -117,8 +123,10 @@ public:
    * that Begin() and MakeVertices() grow them in place instead of
    * allocating: a re-execution writes into memory already committed, where
    * fresh memory costs the kernel's zeroing of every page (as much as the
-   * scan itself at 512^3 and density 1/2). Call before emptying `previous`;
-   * what is not used by the next Begin() and MakeVertices() is released.
+   * scan itself). Call before emptying `previous`; what is not used by the
+   * next Begin() and MakeVertices() is released. Recycle(nullptr) ends a
+   * run: the kept arrays are released, and the spare blocks the run did not
+   * take are unmapped.
    */
   void Recycle(vtkPolyData* previous);
 
@@ -158,6 +166,8 @@ private:
   vtkSmartPointer<ArrayT> NewOrRecycled(const std::string& role, int components);
   std::vector<vtkIdType> LayerIds; // in-layer indices of one layer's samples
   std::vector<vtkIdType> RowEnds;  // where each row's samples end in LayerIds
+  // This assembler's blocks freed by their arrays, kept for its next run.
+  std::shared_ptr<vtkErrorDiffusionBlockPool> Pool;
 };
 
 #endif

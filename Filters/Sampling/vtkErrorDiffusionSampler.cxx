@@ -1088,7 +1088,12 @@ int vtkErrorDiffusionSampler::Execute(
   vtkImageData* mask = vtkImageData::GetData(outputVector, 1);
   vtkInternals& run = *this->Internals;
   const auto continueKey = vtkStreamingDemandDrivenPipeline::CONTINUE_EXECUTING();
-  const auto fail = [&](int status) {
+  // An error (already reported) or an abort ends the run with empty outputs.
+  // The request still succeeds: a failed request leaves the consumers'
+  // requests of this run behind (a later run without the mask then rejects
+  // the mask request left from this one), and ParaView would execute the
+  // filter again on every update only to repeat the error.
+  const auto fail = [&]() {
     run.Running = false;
     run.Points = nullptr;
     run.Mask = nullptr;
@@ -1096,12 +1101,12 @@ int vtkErrorDiffusionSampler::Execute(
     output->Initialize();
     mask->Initialize();
     request->Remove(continueKey);
-    return status;
+    return 1;
   };
   if (!image)
   {
     vtkErrorMacro("No input image.");
-    return fail(0);
+    return fail();
   }
   // The sites sampled: the image's points, or its cells' centres.
   vtkSmartPointer<vtkImageData> input = image;
@@ -1118,18 +1123,18 @@ int vtkErrorDiffusionSampler::Execute(
     if (!run.Piece && (run.SampledLayers() == 0 || run.NX() <= 0 || run.NY() <= 0))
     {
       vtkErrorMacro("The input image has an empty extent: nothing to sample.");
-      return fail(0);
+      return fail();
     }
     this->UpdateProgress(0.0);
     if (!this->StartRun(request, inputVector))
     {
-      return fail(0);
+      return fail();
     }
     run.Running = true;
   }
   if (!this->Advance(input.Get(), inputVector))
   {
-    return fail(this->IsAborted() ? 1 : 0);
+    return fail();
   }
   if (run.Current < run.Steps.size())
   {

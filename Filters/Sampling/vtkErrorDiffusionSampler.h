@@ -87,10 +87,11 @@
  * A budget that yields no points (NumberOfPoints 0, or a DensityScale that
  * makes the expected count below one half) gives a warning saying so.
  *
- * Bad input (no array, non-numeric or cell-data array, component out of range,
- * empty extent, non-finite DensityScale or ModulationScale, an unreadable or
- * malformed parameter file, slabs whose arrays differ) gives a vtkErrorMacro
- * and empty outputs; the next good update works.
+ * Bad input (no array, a non-numeric array, component out of range, empty
+ * extent, non-finite DensityScale or ModulationScale, an empty custom scalar
+ * range, an unreadable or malformed parameter file, slabs whose arrays
+ * differ) gives a vtkErrorMacro and empty outputs, and the request succeeds
+ * (downstream filters see the empty output); the next good update works.
  *
  * @sa vtkErrorDiffusionKernel vtkSamplingDensity vtkSamplingBudget
  * vtkErrorDiffusionParameterTable vtkBlueNoiseSpectrum vtkPErrorDiffusionSampler
