@@ -8,6 +8,8 @@
 
 #include <algorithm>
 #include <array>
+#include <atomic>
+#include <cerrno>
 #include <cmath>
 #include <cstdlib>
 #include <cstring>
@@ -52,43 +54,56 @@ vtkIdType SlabGrain(int lx, int ly)
 }
 
 //------------------------------------------------------------------------------
-// The buffers of a large grid (a gigabyte at 512^3) are committed in bulk
-// before the transform writes them. Faulting them in page by page as the
-// first write reaches them costs more than the transform on virtual machines
-// that trap every fault (3.3 s per GiB measured on the 2-core development VM,
-// against under 1 s in bulk), and transparent huge pages cut the number of
-// pages by 512 where the system offers them. Small buffers (an optimizer's
-// grids) are left to the usual first touch. The memory comes from
-// posix_memalign, so free() releases it; either alignment satisfies FFTW.
+// The buffers of a large grid are committed in bulk before the transform
+// writes them: faulting them in page by page as the first write reaches them
+// costs more than the transform on virtual machines that trap every fault,
+// and transparent huge pages cut the number of pages by 512 where the system
+// offers them. Small buffers (an optimizer's grids) are left to the usual
+// first touch. The memory comes from posix_memalign, so free() releases it;
+// either alignment satisfies FFTW.
 constexpr std::size_t LargeBytes = std::size_t(1) << 24;     // 16 MiB
 constexpr std::size_t LargeAlignment = std::size_t(1) << 21; // 2 MiB: huge pages
 constexpr std::size_t SmallAlignment = 64;
 constexpr std::size_t CommitChunk = std::size_t(1) << 26; // 64 MiB per task
 
-void CommitPages(char* begin, std::size_t bytes)
+// False when the system has not the memory: with overcommit an allocation
+// succeeds whatever its size, and writing it is what fails (the process is
+// killed), so the commit is where a grid too large for the memory is found.
+bool CommitPages(char* begin, std::size_t bytes)
 {
 #if defined(__linux__) && defined(MADV_HUGEPAGE)
   madvise(begin, bytes, MADV_HUGEPAGE); // advice only: a failure changes nothing
 #endif
 #if defined(__linux__)
   const vtkIdType chunks = static_cast<vtkIdType>((bytes + CommitChunk - 1) / CommitChunk);
+  std::atomic<bool> committed(true);
   vtkSMPTools::For(0, chunks, 1,
     [&](vtkIdType first, vtkIdType last)
     {
-      for (vtkIdType c = first; c < last; ++c)
+      for (vtkIdType c = first; c < last && committed.load(std::memory_order_relaxed); ++c)
       {
         char* chunk = begin + c * CommitChunk;
         const std::size_t size =
           std::min(CommitChunk, bytes - static_cast<std::size_t>(c) * CommitChunk);
-        if (madvise(chunk, size, MADV_POPULATE_WRITE) != 0)
+        if (madvise(chunk, size, MADV_POPULATE_WRITE) == 0)
         {
-          std::memset(chunk, 0, size); // no bulk commit here: first touch, in parallel
+          continue;
+        }
+        if (errno == ENOMEM || errno == EFAULT)
+        {
+          committed = false; // the pages cannot be had
+        }
+        else
+        {
+          std::memset(chunk, 0, size); // EINVAL (before Linux 5.14): first touch, in parallel
         }
       }
     });
+  return committed.load();
 #else
   (void)begin;
   (void)bytes;
+  return true;
 #endif
 }
 
@@ -101,9 +116,10 @@ double* AllocateLarge(std::size_t count)
   {
     return nullptr;
   }
-  if (large)
+  if (large && !CommitPages(static_cast<char*>(memory), bytes))
   {
-    CommitPages(static_cast<char*>(memory), bytes);
+    std::free(memory);
+    return nullptr;
   }
   return static_cast<double*>(memory);
 }
@@ -603,6 +619,13 @@ void vtkBlueNoiseSpectrumKernel::ReleaseBuffers()
   this->SlabStride = 0;
   this->HalfSize = 0;
   std::fill(this->Dimensions, this->Dimensions + 3, 0);
+}
+
+//------------------------------------------------------------------------------
+double vtkBlueNoiseSpectrumKernel::BufferBytes(int lx, int ly, int lz, bool severalRealizations)
+{
+  const double half = static_cast<double>(lz) * ly * (lx / 2 + 1) * sizeof(double);
+  return (severalRealizations ? 3.0 : 2.0) * half;
 }
 
 //------------------------------------------------------------------------------

@@ -146,6 +146,13 @@ public:
    * shape until the next successful call.
    */
   bool SetDimensions(int lx, int ly, int lz, std::string* error = nullptr);
+
+  /**
+   * The bytes of the kernel's buffers for an lx * ly * lz grid (see Memory
+   * above): the transform, and the half-spectrum sum when several
+   * realizations are added. In double, as field-data grids overflow integers.
+   */
+  static double BufferBytes(int lx, int ly, int lz, bool severalRealizations);
   void GetDimensions(int dims[3]) const;
 
   /// w of Eq. 5, clamped to [0, 1].

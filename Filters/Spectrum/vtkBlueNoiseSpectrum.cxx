@@ -32,6 +32,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <fstream>
+#include <iomanip>
 #include <limits>
 #include <new>
 #include <sstream>
@@ -205,6 +207,44 @@ void CheckGridSize(const int* dims, bool fromFieldData, vtkIdType maximum, std::
     error << "Cannot analyze the grid: the " << dims[0] << " x " << dims[1] << " x " << dims[2]
           << " grid" << (fromFieldData ? " of the SamplingGridExtent field data" : "") << " has "
           << points << " points, more than MaximumNumberOfGridPoints (" << maximum << ").";
+  }
+}
+
+// The memory the system can give without swapping (MemAvailable); 0 when
+// unknown.
+double AvailableMemoryBytes()
+{
+  std::ifstream meminfo("/proc/meminfo");
+  std::string key;
+  double kib = 0.0;
+  std::string unit;
+  while (meminfo >> key >> kib >> unit)
+  {
+    if (key == "MemAvailable:")
+    {
+      return kib * 1024.0;
+    }
+  }
+  return 0.0;
+}
+
+// A grid within MaximumNumberOfGridPoints whose buffers the memory cannot
+// hold is an error before they are allocated: with overcommit their
+// allocation succeeds, and writing them gets the process killed.
+void CheckGridMemory(const int* dims, bool fromFieldData, bool severalRealizations, bool image,
+  std::ostringstream& error)
+{
+  const double available = AvailableMemoryBytes();
+  const double bytes =
+    vtkBlueNoiseSpectrumKernel::BufferBytes(dims[0], dims[1], dims[2], severalRealizations) +
+    (image ? 8.0 * dims[0] * dims[1] * dims[2] : 0.0);
+  if (available > 0.0 && bytes > available)
+  {
+    error << "Cannot analyze the grid: the " << dims[0] << " x " << dims[1] << " x " << dims[2]
+          << " grid" << (fromFieldData ? " of the SamplingGridExtent field data" : "")
+          << " cannot be allocated: it needs " << std::setprecision(3) << bytes / 1e9 << " GB for its transform"
+          << (image ? " and spectrum image" : "") << ", more than the " << available / 1e9
+          << " GB of memory available.";
   }
 }
 
@@ -952,8 +992,13 @@ bool vtkBlueNoiseSpectrum::BuildGrids(std::vector<Realization>& realizations)
   if (error.tellp() == 0)
   {
     const Realization& first = realizations[0];
-    CheckGridSize(first.Grid.Dimensions, first.Kind == SignalKind::Points && !first.GridFromBounds,
-      this->MaximumNumberOfGridPoints, error);
+    const bool fromFieldData = first.Kind == SignalKind::Points && !first.GridFromBounds;
+    CheckGridSize(first.Grid.Dimensions, fromFieldData, this->MaximumNumberOfGridPoints, error);
+    if (error.tellp() == 0)
+    {
+      CheckGridMemory(first.Grid.Dimensions, fromFieldData, realizations.size() > 1,
+        this->GenerateSpectrumImage != 0, error);
+    }
   }
   if (error.tellp() != 0)
   {

@@ -85,11 +85,14 @@
  * uses GridDimensions, which differs from what was announced; a consumer that
  * asks for the announced extent then executes the filter again.)
  *
- * Memory: the kernel's (about 8 bytes per voxel of the grid for one
- * realization, 12 for several), 16 bytes per binned point (28 for weighted
- * image centers), and 8 bytes per voxel for the spectrum image. A 512^3 grid
- * with 6.7 million points: 1.40 GB peak resident for a process that also
- * holds those points and their mask, 2.34 GB with the spectrum image.
+ * Memory, at its peak during an execution: the kernel's buffers
+ * (vtkBlueNoiseSpectrumKernel::BufferBytes: about 8 bytes per grid point for
+ * one realization, 12 for several), 16 bytes per binned point (28 for
+ * weighted image centers), and 8 bytes per grid point for the spectrum
+ * image (TestBlueNoiseSpectrumMemory measures it). A grid whose buffers
+ * exceed the memory the system has available (MemAvailable, on Linux) is an
+ * error that names the grid, before anything is allocated; the kernel's
+ * buffers are freed when the execution ends.
  *
  * @sa vtkBlueNoiseSpectrumKernel vtkErrorDiffusionSampler
  */

@@ -13,3 +13,7 @@ bluenoise_add_test(TestBlueNoiseSpectrumThreads LABELS spectrum threads TIMEOUT 
 bluenoise_add_test(TestBlueNoiseSpectrumThreadCount LABELS spectrum threads TIMEOUT 120)
 bluenoise_add_test(TestBlueNoiseSpectrumExecutions LABELS spectrum LIBS VTK::ImagingCore VTK::FiltersCore)
 bluenoise_add_test(TestBlueNoiseSpectrumAssumedGrid LABELS spectrum)
+# Peak memory against the documented bytes a grid point; reads this process's
+# resident high-water mark, so nothing runs beside it.
+bluenoise_add_test(TestBlueNoiseSpectrumMemory LABELS "spectrum;memory")
+set_tests_properties(TestBlueNoiseSpectrumMemory PROPERTIES SKIP_RETURN_CODE 125 RUN_SERIAL TRUE)

@@ -371,7 +371,9 @@ void GridLimits()
   const double impossible[6] = { 0, 1073741823, 0, 1048575, 0, 1 };
   filter->UseInputGridOn();
   filter->SetMaximumNumberOfGridPoints(VTK_ID_MAX);
-  ExpectUpdate(filter, WithSamplingGrid(impossible), "allocate", "a 2^54-byte grid without limit");
+  ExpectUpdate(filter, WithSamplingGrid(impossible),
+    "1073741824 x 1048576 x 2 grid of the SamplingGridExtent field data cannot be allocated",
+    "a 2^54-byte grid without limit");
   // The same filter then measures a small grid.
   ExpectUpdate(filter, WithSamplingGrid(small), "", "an 8^3 grid after the failures");
 }
