@@ -12,7 +12,7 @@ of all processes once (gathered to process 0). Process 0 prints one Markdown row
 processes, seconds (the slowest process, from its update request to its
 points), points, L(g) and the mean anisotropy (dB, shells 1 .. edge/2) of the
 gathered set.
-No thresholds: figures for the README.
+No thresholds: figures for Documentation/Results.md (scripts/results.py).
 """
 import argparse
 import time

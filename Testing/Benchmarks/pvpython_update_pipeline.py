@@ -17,7 +17,7 @@ of a case are not counted: each writes a fresh output (the operating system
 zeroes its pages), the second because ParaView's post filter still holds the
 first output while the filter runs again; from the third on, an execution
 writes into the memory of the output before the last. No thresholds: figures
-for the README.
+for Documentation/Results.md (scripts/results.py).
 """
 import argparse
 import json
