@@ -128,9 +128,9 @@ double* AllocateLarge(std::size_t count)
 // Transforms per grid shape: a 2D real-to-complex transform of one z slab
 // (in place, rows padded to 2 * (Lx / 2 + 1) doubles) and a batch of
 // ColumnBlock 1D transforms along z over a small gathered block. FFTW's one-call
-// 3D plan strides through the whole volume for its z pass: at 512^3 with
-// FFTW_ESTIMATE it takes 3.5 s on one core and 1.9 s with two FFTW threads,
-// against 0.8 s on one core for slabs and in-cache column blocks. Slabs and
+// 3D plan strides through the whole volume for its z pass, out of cache;
+// slabs and in-cache column blocks take a fraction of its time on one core
+// (BenchmarkSpectrum compares the two). Slabs and
 // blocks are independent, so they are spread over vtkSMPTools threads, every
 // one executing the same single-threaded plans: the result does not depend on
 // the number of threads.

@@ -72,18 +72,14 @@
  * the STDThread backend), each running the same single-threaded FFTW plans,
  * and the shell statistics are summed in fixed chunks added in a fixed order:
  * every reported value is the same, to the last bit, whatever the number of
- * threads. Measured on the 2-core development VM for one 512^3 mask at
- * g = 0.05, AddRealization + Compute with the buffers already committed: about
- * 1.0 s on one thread, 0.53 s on two (BenchmarkSpectrum, Reused); committing
- * the 1.08 GB of a new kernel took 0.1 s to 2.4 s more on a quiet machine,
- * depending on the huge pages the system had at hand.
+ * threads. BenchmarkSpectrum times it by thread count, with the buffers
+ * reused and new (Documentation/Results.md).
  *
  * Memory: the transform buffer, Lz * Ly * 2 (Lx / 2 + 1) doubles (about 8
  * bytes per voxel), which also holds the power of a single realization; from
  * the second realization on, a dense half-spectrum sum of Lz * Ly * (Lx / 2 + 1)
- * doubles (about 4 bytes per voxel) more. 512^3: 1.08 GB for one realization
- * (1.21 GB peak resident for a process holding the kernel and the 134 MB
- * mask), 1.62 GB for several. Buffers of 16 MiB and more are committed in bulk
+ * doubles (about 4 bytes per voxel) more (BufferBytes() says how much for a
+ * grid, before anything is allocated). Buffers of 16 MiB and more are committed in bulk
  * when allocated (on Linux: transparent huge pages where offered, and
  * MADV_POPULATE_WRITE), as faulting them in page by page costs more than the
  * transform on virtual machines. A kernel keeps its buffers across Reset() and

@@ -45,9 +45,9 @@ bool SameKey(const std::vector<double>& a, const std::vector<double>& b)
 
 // The charges of the built-in tables at the sampler's default modulation
 // scale, one per calibration level, as their calibration gives them: a first
-// update with default settings then calibrates nothing (a whole curve took
-// 0.4 s, 2026-11-27). TestErrorDiffusionChargeCurve calibrates them afresh and
-// prints new values when the kernel or the tables changed.
+// update with default settings then calibrates nothing (a whole curve costs
+// as much as a small sampling run). TestErrorDiffusionChargeCurve calibrates
+// them afresh and prints new values when the kernel or the tables changed.
 constexpr double KnownScale = 0.5;
 struct KnownCurve
 {

@@ -35,8 +35,9 @@
  * inverse point spacing); below 0.0255 (g = 1e-4) the lowest value holds.
  * g > 0.5 uses C(1 - g) (the kernel mirrors the process).
  *
- * Cost and caching. A level costs 3 to 60 ms (the low levels need wide boxes)
- * and is calibrated only when a density that needs it comes up. Curves are
+ * Cost and caching. A level costs a few sampled layers of its box (the low
+ * levels need wide boxes) and is calibrated only when a density that needs
+ * it comes up. Curves are
  * shared by every kernel of the process with the same table and scale (Get():
  * the same key values and scale bit for bit), and thread safe. The process
  * keeps the CacheCapacity curves used last (least recently used out first),

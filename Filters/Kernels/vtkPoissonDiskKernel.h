@@ -39,10 +39,10 @@
  *   grid: every active voxel that is not a sample conflicts with a sample.
  *   Each new sample marks the active voxels it conflicts with (those within
  *   its radius), so a visit costs O(1) and a sample O(r^3); rows whose largest
- *   radius cannot reach the sample are skipped (vtkVoxelBall). Measured on
- *   64^3 at 8/255, this order gives a lower L (0.068) than an active-list
- *   (Bridson) growth over the same voxels (0.070) or than candidates jittered
- *   inside their voxels for the conflict test (0.070 to 0.078).
+ *   radius cannot reach the sample are skipped (vtkVoxelBall). This order
+ *   gives a lower L(g) than an active-list (Bridson) growth over the same
+ *   voxels, or than candidates jittered inside their voxels for the conflict
+ *   test (the figures are in the commit that chose it).
  * - Border (ExtendSupport, default on): the kernel samples the volume
  *   continued around its support (vtkVoxelMargin): a margin beyond the faces
  *   and the empty and saturated voxels near the support become virtual active
