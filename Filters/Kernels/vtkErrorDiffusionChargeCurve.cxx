@@ -2,7 +2,7 @@
 // SPDX-License-Identifier: BSD-3-Clause
 #include "vtkErrorDiffusionChargeCurve.h"
 
-#include "vtkErrorDiffusionKernel.h"
+#include "vtkErrorDiffusionScan.h"
 
 #include <algorithm>
 #include <cmath>
@@ -158,7 +158,7 @@ float vtkErrorDiffusionChargeCurve::ChargeOfLevel(size_t i)
   const double g = this->Levels[i] / 255.0;
   for (int seed : { 12345, 12346 })
   {
-    guess += static_cast<float>(vtkErrorDiffusionKernel::MeasureReceivedError(
+    guess += static_cast<float>(vtkErrorDiffusionScan::MeasureReceivedError(
       this->Table, this->ModulationScale, g, guess, seed));
   }
   this->Charges[i] = guess;
