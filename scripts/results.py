@@ -11,7 +11,7 @@ hold the benchmark programs (Google Benchmark, -DBLUENOISE_BUILD_BENCHMARKS=ON).
 Each section of the page is one source, run here, and says when and on what
 machine it was made and the exact command that made it:
 
-  sampler    bin/BenchmarkErrorDiffusionSampler: the sampler against a plain
+  sampler    bin/BenchmarkErrorDiffusionSampler: the sampler against the tight
              single-threaded loop of the paper's scan, timed in the same run
   pvpython   Testing/Benchmarks/pvpython_update_pipeline.py under pvpython:
              the plugin's whole UpdatePipeline against the same loop
@@ -263,7 +263,8 @@ def section_sampler(opts, scratch):
         'quick (the 256^3 cases, one repetition, one iteration each)' if opts.quick
         else '%d repetitions of every case' % reps)
     out += [
-        'x_plain = the time of a plain single-threaded loop of the paper\'s scan on the same',
+        'x_tight = the time of the tight single-threaded loop of the paper\'s scan (`TightScan`',
+        'in the benchmark program says what it does and does not do) on the same',
         'cube (fastest of 3, timed right before the case and, for the filter, right after it',
         'too: the faster of the two) / the time of the case; higher is faster. Each cell:',
         'the median of the repetitions, the lowest in brackets (one value for one',
@@ -274,11 +275,11 @@ def section_sampler(opts, scratch):
     rows = []
     for L, g, rs in sorted(kernel):
         rows.append(['%d^3' % L, g_label(g), ms([seconds(b) for b in rs]),
-                     spread([b['x_plain'] for b in rs if 'x_plain' in b])])
+                     spread([b['x_tight'] for b in rs if 'x_tight' in b])])
     if rows:
         out += ['The error-diffusion kernel alone (its default parameters, the paper\'s Table 1; no',
                 'pipeline):', '']
-        out += table(['cube', 'g', 'ms (median)', 'x_plain'], rows)
+        out += table(['cube', 'g', 'ms (median)', 'x_tight'], rows)
     rows = []
     for L, g, fl, busy, thread in sorted({k[:5] for k in filt_runs}):
         if busy:
@@ -286,22 +287,22 @@ def section_sampler(opts, scratch):
         cells = ['float' if fl else 'uint8', '%d^3' % L, g_label(g)]
         for method in (2, 0):
             rs = filt_runs.get((L, g, fl, busy, thread, method), [])
-            cells += [ms([seconds(b) for b in rs]), spread([b['x_plain'] for b in rs])]
+            cells += [ms([seconds(b) for b in rs]), spread([b['x_tight'] for b in rs])]
         rows.append(cells)
     if rows:
         out += ['The filter (`vtkErrorDiffusionSampler`, worker thread allowed):', '']
-        out += table(['input', 'cube', 'g', 'default: ms', 'default: x_plain',
-                      'paper\'s: ms', 'paper\'s: x_plain'], rows, ['---'] * 3 + ['---:'] * 4)
+        out += table(['input', 'cube', 'g', 'default: ms', 'default: x_tight',
+                      'paper\'s: ms', 'paper\'s: x_tight'], rows, ['---'] * 3 + ['---:'] * 4)
     rows = []
     for key in sorted(k for k in filt_runs if k[3]):
         L, g, fl, busy, thread, method = key
         rs = filt_runs[key]
         rows.append(['default' if method == 2 else 'paper\'s', '%d^3' % L, g_label(g),
                      'on' if thread else 'off', ms([seconds(b) for b in rs]),
-                     spread([b['x_plain'] for b in rs])])
+                     spread([b['x_tight'] for b in rs])])
     if rows:
         out += ['With every core busy (another process spinning on each core), uint8:', '']
-        out += table(['method', 'cube', 'g', 'worker thread', 'ms', 'x_plain'], rows,
+        out += table(['method', 'cube', 'g', 'worker thread', 'ms', 'x_tight'], rows,
                      ['---'] * 4 + ['---:'] * 2)
     rows = []
     for L, g, fl, busy, thread in sorted({k[:5] for k in filt_runs}):
@@ -347,12 +348,15 @@ def section_pvpython(opts, scratch):
                   '--repeats', str(repeats)]
     out = provenance(date, where, [command_line(shown_argv)],
                      build_description(opts.build, plugins[-1]),
-                     'quick (256^3 only, 2 executions a case)' if opts.quick else None)
+                     'quick (256^3 only, 2 re-executions a case)' if opts.quick else None)
     out += ['The proxy\'s defaults (`Jitter` on) but for the identity mapping and a budget of',
-            'g x voxels; each timed `UpdatePipeline` is followed by the plain loop',
-            '(`BM_Plain`) under the same load, x_plain = plain / UpdatePipeline of each pair:',
-            'the median, the lowest in brackets. The first two executions of a case are not',
-            'counted: each writes a fresh output, whose pages the operating system zeroes.', '']
+            'g x voxels, with the default method and with the paper\'s (Table 1). *first*: the',
+            'first `UpdatePipeline` of a new proxy, as a first Apply (a fresh output; for the',
+            'first case of a method, the calibration of its charges); *again*: re-executions',
+            'after a change of `Seed`, as a re-Apply (the first two not counted, see the script).',
+            'Each timed `UpdatePipeline` is followed by the tight loop (`BM_Plain`) under the',
+            'same load; x = loop / UpdatePipeline of each pair, for *again* the median and the',
+            'lowest in brackets.', '']
     out += [l for l in text.splitlines() if l.startswith('|')] + ['']
     return out
 
@@ -641,7 +645,7 @@ def page(sections, argv):
              'to regenerate the page or one section of it. Each section says when and on what',
              'machine it was made and the exact command that made it (run from the repository',
              'root; the benchmark programs\' JSON goes to a scratch folder). Times are wall-clock;',
-             'on a machine shared with other jobs the ratios measured within one run (x_plain,',
+             'on a machine shared with other jobs the ratios measured within one run (x_tight,',
              'vs_ED, speed-up) mean more than the absolute times. (Google Benchmark\'s warning',
              'that its library was built as DEBUG is about Debian\'s libbenchmark, not the timed',
              'code: each section names the build type of its programs.)', '']
