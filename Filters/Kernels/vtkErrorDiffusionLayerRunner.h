@@ -18,7 +18,10 @@
  * while the scan thread waits for the consumer to free a buffer, it calls
  * Idle() (if set) until that returns false. The calling thread is the one
  * that consumes, so a consumer may report progress and check for abort the
- * way a VTK filter must (from the thread that called it).
+ * way a VTK filter must (from the thread that called it). The worker is a
+ * std::thread of the runner's own (a two-stage pipeline, which vtkSMPTools
+ * does not express); the caller decides whether to use it
+ * (vtkBlueNoiseThreads::Available() says whether there is a second core).
  *
  * Per layer k (0-based in the run) the runner asks Fill(k, density) for the
  * densities (the kernel also needs the next layer's, so Fill runs at least one

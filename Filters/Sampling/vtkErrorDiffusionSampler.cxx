@@ -3,6 +3,7 @@
 #include "vtkErrorDiffusionSampler.h"
 
 #include "vtkBlueNoiseRelaxation.h"
+#include "vtkBlueNoiseThreads.h"
 #include "vtkCellArray.h"
 #include "vtkDoubleArray.h"
 #include "vtkErrorDiffusionLayerBacklog.h"
@@ -21,7 +22,6 @@
 #include "vtkPointData.h"
 #include "vtkPoints.h"
 #include "vtkPolyData.h"
-#include "vtkSMPTools.h"
 #include "vtkSamplingBudget.h"
 #include "vtkSamplingLattice.h"
 #include "vtkStreamingDemandDrivenPipeline.h"
@@ -36,7 +36,6 @@
 #include <new>
 #include <sstream>
 #include <string>
-#include <thread>
 #include <vector>
 
 vtkStandardNewMacro(vtkErrorDiffusionSampler);
@@ -46,34 +45,6 @@ namespace
 {
 // Below this a second thread costs more than it saves.
 constexpr vtkIdType MinimumVoxelsForWorkerThread = 32768;
-
-// The threads vtkSMPTools would use. Its Sequential backend (Debian's VTK
-// and ParaView default to it) always says one; there VTK_SMP_MAX_THREADS, or
-// else the hardware, decides, so that a stock ParaView is not held to one
-// core while VTK_SMP_MAX_THREADS=1 still is.
-bool SequentialBackend()
-{
-  const char* backend = vtkSMPTools::GetBackend();
-  return backend && std::string(backend) == "Sequential";
-}
-
-int AvailableThreads()
-{
-  if (!SequentialBackend())
-  {
-    return vtkSMPTools::GetEstimatedNumberOfThreads();
-  }
-  if (const char* limit = std::getenv("VTK_SMP_MAX_THREADS"))
-  {
-    char* end = nullptr;
-    const long n = std::strtol(limit, &end, 10);
-    if (end != limit && *end == '\0' && n > 0)
-    {
-      return static_cast<int>(std::min<long>(n, 1024));
-    }
-  }
-  return static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
-}
 
 // Layers [first, last] split into `parts` contiguous ranges, as even as can be.
 std::vector<std::array<int, 2>> SplitLayers(int first, int last, int parts)
@@ -629,7 +600,7 @@ bool vtkErrorDiffusionSampler::CollectStatistics(
   // A few million values at a time, to report progress and honor abort;
   // split over threads of its own where vtkSMPTools' backend would not.
   const int chunk = static_cast<int>(std::max<vtkIdType>(1, (vtkIdType(1) << 22) / layer));
-  const int threads = SequentialBackend() ? AvailableThreads() : 1;
+  const int threads = vtkBlueNoiseThreads::OwnThreads();
   for (int z = step.First; z <= step.Last; z += chunk)
   {
     const int last = std::min(step.Last, z + chunk - 1);
@@ -781,7 +752,7 @@ bool vtkErrorDiffusionSampler::ScanSlab(vtkImageData* input, vtkDataArray* array
   vtkErrorDiffusionLayerRunner runner;
   runner.SetThreaded(this->UseWorkerThread && layers > 1 &&
     layer * layers >= MinimumVoxelsForWorkerThread &&
-    AvailableThreads() > 1);
+    vtkBlueNoiseThreads::Available() > 1);
   runner.SetFill([&](int k, float* density) {
     const int z = step.First + k;
     const vtkIdType begin = (z - extent[4]) * layer;

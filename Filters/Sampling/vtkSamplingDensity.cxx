@@ -3,6 +3,7 @@
 #include "vtkSamplingDensity.h"
 
 #include "vtkArrayDispatch.h"
+#include "vtkBlueNoiseThreads.h"
 #include "vtkDataArrayRange.h"
 #include "vtkDataSetAttributes.h"
 #include "vtkPiecewiseFunction.h"
@@ -15,7 +16,6 @@
 #include <cstdint>
 #include <cstring>
 #include <limits>
-#include <thread>
 #include <type_traits>
 #include <vector>
 
@@ -577,19 +577,11 @@ void vtkSamplingDensity::CollectStatistics(vtkDataArray* array, vtkIdType begin,
   if (parts > 1 && !this->Function)
   {
     std::vector<vtkSamplingBudget> partial(static_cast<size_t>(parts - 1));
-    std::vector<std::thread> workers;
     const auto bound = [&](vtkIdType k) { return begin + (end - begin) * k / parts; };
-    for (vtkIdType k = 1; k < parts; ++k)
-    {
-      workers.emplace_back([&, k] {
-        this->CollectStatistics(array, bound(k), bound(k + 1), ghosts, partial[k - 1], 1);
-      });
-    }
-    this->CollectStatistics(array, begin, bound(1), ghosts, statistics, 1);
-    for (std::thread& worker : workers)
-    {
-      worker.join();
-    }
+    vtkBlueNoiseThreads::Split(static_cast<int>(parts), [&](int k) {
+      this->CollectStatistics(
+        array, bound(k), bound(k + 1), ghosts, k == 0 ? statistics : partial[k - 1], 1);
+    });
     for (const vtkSamplingBudget& part : partial)
     {
       statistics.Merge(part);

@@ -70,8 +70,8 @@ public:
    * (the transfer function already applied). Voxels whose ghost flag (if
    * `ghosts`, indexed like the tuples) marks them as not owned are skipped.
    * The pass uses vtkSMPTools; with `threads` > 1 it is also split into that
-   * many contiguous parts on threads of its own (for vtkSMPTools' Sequential
-   * backend), each counted apart and merged (not with a transfer function,
+   * many contiguous parts on threads of its own (vtkBlueNoiseThreads::Split,
+   * for vtkSMPTools' Sequential backend), each counted apart and merged (not with a transfer function,
    * whose evaluation is not known to be thread-safe). The histogram's sums
    * are exact, so neither split changes the result.
    */
