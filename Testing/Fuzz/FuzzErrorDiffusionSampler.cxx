@@ -58,6 +58,37 @@ constexpr int ScalarTypes[] = { VTK_CHAR, VTK_SIGNED_CHAR, VTK_UNSIGNED_CHAR, VT
   VTK_UNSIGNED_SHORT, VTK_INT, VTK_UNSIGNED_INT, VTK_LONG_LONG, VTK_UNSIGNED_LONG_LONG,
   VTK_ID_TYPE, VTK_FLOAT, VTK_DOUBLE };
 
+// The fill loops below run once per value: they go without coverage
+// instrumentation (their branches say nothing of the filter), and the uniform
+// draw is written out as libstdc++'s uniform_real_distribution<double> makes
+// it from a 32-bit generator (generate_canonical: two draws, a sum, a
+// division): the same values bit for bit, without the long double log it
+// takes per call (a third of the time the image took).
+__attribute__((no_sanitize("coverage"))) void FillRandomBytes(
+  std::mt19937& random, unsigned char* bytes, size_t size)
+{
+  for (size_t i = 0; i < size; ++i)
+  {
+    bytes[i] = static_cast<unsigned char>(random());
+  }
+}
+
+__attribute__((no_sanitize("coverage"))) void FillUniform(
+  std::mt19937& random, vtkDataArray* array, double lo, double hi)
+{
+  for (vtkIdType i = 0; i < array->GetNumberOfValues(); ++i)
+  {
+    double sum = static_cast<double>(random());
+    sum += static_cast<double>(random()) * 0x1p32;
+    double unit = sum * 0x1p-64;
+    if (unit >= 1.0)
+    {
+      unit = std::nextafter(1.0, 0.0);
+    }
+    array->SetVariantValue(i, vtkVariant(unit * (hi - lo) + lo));
+  }
+}
+
 /// An array of `tuples` tuples filled by one of a few patterns, with special
 /// floating-point values sprinkled in for the floating types.
 vtkSmartPointer<vtkDataArray> MakeArray(FuzzedDataProvider& fdp, const char* name, vtkIdType tuples)
@@ -82,20 +113,13 @@ vtkSmartPointer<vtkDataArray> MakeArray(FuzzedDataProvider& fdp, const char* nam
       break;
     }
     case 1: // random bytes
-      for (size_t i = 0; i < size; ++i)
-      {
-        bytes[i] = static_cast<unsigned char>(random());
-      }
+      FillRandomBytes(random, bytes, size);
       break;
     default: // one value, or values in a range, through the array's own conversion
     {
       const double lo = fdp.ConsumeFloatingPointInRange<double>(-300.0, 300.0);
       const double width = fdp.ConsumeFloatingPointInRange<double>(0.0, 300.0);
-      std::uniform_real_distribution<double> value(lo, lo + width);
-      for (vtkIdType i = 0; i < array->GetNumberOfValues(); ++i)
-      {
-        array->SetVariantValue(i, vtkVariant(value(random)));
-      }
+      FillUniform(random, array, lo, lo + width);
       break;
     }
   }
@@ -259,41 +283,28 @@ void CheckResult(vtkErrorDiffusionSampler* sampler, vtkIdType voxels)
 }
 
 /// The same filter, reset, samples a good volume: 20 points from 6^3 voxels
-/// of density 0.3. After a run that counted floating-point values (a point
-/// budget on float or double input, without an error), float values 0.3: the
-/// budget then reuses the float tallies that run left. Otherwise 8-bit
-/// values 3 on the range [0, 10]: fresh float tallies (1.5 MiB per thread,
-/// faulted in page by page under ASan) made this check 70 % of the fuzzer's
-/// time, where the 8-bit counts cost next to nothing.
-void CheckGoodUpdate(vtkErrorDiffusionSampler* sampler, MessageObserver* observer, bool floating)
+/// of 8-bit values 3 on the range [0, 10] (density 0.3). (Float values drew
+/// fresh float tallies, 1.5 MiB per statistics thread faulted in page by page
+/// under ASan, for 70 % of the fuzzer's time; the 8-bit counts cost next to
+/// nothing. The float tallies' reuse is still fuzzed, from one statistics
+/// step to the next of an update in several slabs, and
+/// TestErrorDiffusionSamplerSoak reuses them across 150 updates.)
+void CheckGoodUpdate(vtkErrorDiffusionSampler* sampler, MessageObserver* observer)
 {
   auto good = vtkSmartPointer<vtkImageData>::New();
   good->SetDimensions(6, 6, 6);
-  vtkSmartPointer<vtkDataArray> values;
-  if (floating)
-  {
-    auto floats = vtkSmartPointer<vtkFloatArray>::New();
-    floats->SetNumberOfValues(good->GetNumberOfPoints());
-    floats->Fill(0.3f);
-    values = floats;
-  }
-  else
-  {
-    auto bytes = vtkSmartPointer<vtkUnsignedCharArray>::New();
-    bytes->SetNumberOfValues(good->GetNumberOfPoints());
-    bytes->Fill(3);
-    values = bytes;
-  }
+  vtkNew<vtkUnsignedCharArray> values;
   values->SetName("good");
+  values->SetNumberOfValues(good->GetNumberOfPoints());
+  values->Fill(3);
   good->GetPointData()->SetScalars(values);
   sampler->SetInputData(good);
   sampler->SetInputArrayToProcess(
     0, 0, 0, vtkDataObject::FIELD_ASSOCIATION_POINTS, vtkDataSetAttributes::SCALARS);
   sampler->SetMethod(vtkErrorDiffusionSampler::METHOD_RELAXED_ERROR_DIFFUSION);
   sampler->SetComponent(0);
-  sampler->SetDensityMapping(floating ? vtkErrorDiffusionSampler::DENSITY_IDENTITY
-                                      : vtkErrorDiffusionSampler::DENSITY_SCALAR_RANGE);
-  sampler->SetUseCustomScalarRange(!floating);
+  sampler->SetDensityMapping(vtkErrorDiffusionSampler::DENSITY_SCALAR_RANGE);
+  sampler->SetUseCustomScalarRange(true);
   sampler->SetScalarRange(0.0, 10.0);
   sampler->SetTransferFunction(nullptr);
   sampler->SetDensityScale(1.0);
@@ -367,9 +378,6 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size)
   {
     CheckResult(sampler, image->GetNumberOfPoints());
   }
-  const int type = image->GetPointData()->GetScalars()->GetDataType();
-  const bool countedFloats = (type == VTK_FLOAT || type == VTK_DOUBLE) &&
-    sampler->GetUseNumberOfPoints() && observer->NumberOfErrors == 0;
-  CheckGoodUpdate(sampler, observer, countedFloats);
+  CheckGoodUpdate(sampler, observer);
   return 0;
 }
