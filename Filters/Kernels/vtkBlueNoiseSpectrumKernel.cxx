@@ -15,6 +15,7 @@
 #include <cstring>
 #include <limits>
 #include <map>
+#include <memory>
 #include <mutex>
 #include <sstream>
 #include <type_traits>
@@ -143,76 +144,91 @@ struct TransformPlans
 };
 
 // FFTW's planner is not thread-safe, so every plan is made (and destroyed) under
-// one lock; executing a plan on new arrays is thread-safe. Plans are kept for
-// the life of the process: an optimizer evaluates one or two shapes many
-// thousand times, and a plan is small next to its buffers. Plans are made on
-// arrays aligned like every array they later run on (slabs start at multiples
-// of 64 bytes of 2 MiB aligned buffers, column blocks come from fftw_malloc).
-class PlanCache
+// one lock; executing a plan on new arrays is thread-safe. The plans of a
+// shape are shared by the kernels that hold them (an optimizer's kernel keeps
+// one shape for many thousand transforms) and destroyed with the last holder:
+// the process keeps no plan. Plans are made on arrays aligned like every
+// array they later run on (slabs start at multiples of 64 bytes of 2 MiB
+// aligned buffers, column blocks come from fftw_malloc).
+class PlanRegistry
 {
 public:
-  static PlanCache& Instance()
+  static std::shared_ptr<const TransformPlans> Get(const int dims[3], double* slab)
   {
-    static PlanCache cache;
-    return cache;
-  }
-
-  TransformPlans Get(const int dims[3], double* slab)
-  {
-    std::lock_guard<std::mutex> lock(this->Mutex);
+    State& state = Instance();
+    std::lock_guard<std::mutex> lock(state.Mutex);
     const std::array<int, 3> key{ { dims[0], dims[1], dims[2] } };
-    auto it = this->Plans.find(key);
-    if (it != this->Plans.end())
+    auto it = state.Plans.find(key);
+    if (it != state.Plans.end())
     {
-      return it->second;
+      // An expired entry's release is waiting for the lock: it is replaced.
+      if (auto plans = it->second.Owned.lock())
+      {
+        return plans;
+      }
     }
     // FFTW_ESTIMATE leaves the arrays untouched while planning.
-    TransformPlans plans;
-    plans.Slab = fftw_plan_dft_r2c_2d(
+    auto* plans = new TransformPlans;
+    plans->Slab = fftw_plan_dft_r2c_2d(
       dims[1], dims[0], slab, reinterpret_cast<fftw_complex*>(slab), FFTW_ESTIMATE);
     auto* columns = static_cast<fftw_complex*>(
       fftw_malloc(sizeof(fftw_complex) * ColumnBlock * static_cast<std::size_t>(dims[2])));
     const int n[1] = { dims[2] };
-    plans.Columns = columns ? fftw_plan_many_dft(1, n, ColumnBlock, columns, nullptr, ColumnBlock,
-                                1, columns, nullptr, ColumnBlock, 1, FFTW_FORWARD, FFTW_ESTIMATE)
-                            : nullptr;
+    plans->Columns = columns ? fftw_plan_many_dft(1, n, ColumnBlock, columns, nullptr, ColumnBlock,
+                                 1, columns, nullptr, ColumnBlock, 1, FFTW_FORWARD, FFTW_ESTIMATE)
+                             : nullptr;
     fftw_free(columns);
-    if (plans.Slab && plans.Columns)
+    if (!plans->Slab || !plans->Columns)
     {
-      this->Plans.emplace(key, plans);
-      return plans;
+      Destroy(plans);
+      return nullptr;
     }
-    Destroy(plans);
-    return TransformPlans();
+    std::shared_ptr<const TransformPlans> held(plans, [key](const TransformPlans* p) {
+      State& registry = Instance();
+      std::lock_guard<std::mutex> released(registry.Mutex);
+      auto entry = registry.Plans.find(key);
+      if (entry != registry.Plans.end() && entry->second.Plans == p)
+      {
+        registry.Plans.erase(entry);
+      }
+      Destroy(p);
+    });
+    state.Plans[key] = { plans, held };
+    return held;
   }
-
-  PlanCache(const PlanCache&) = delete;
-  PlanCache& operator=(const PlanCache&) = delete;
 
 private:
-  PlanCache() = default;
-  ~PlanCache()
+  struct Entry
   {
-    for (auto& entry : this->Plans)
-    {
-      Destroy(entry.second);
-    }
+    const TransformPlans* Plans;
+    std::weak_ptr<const TransformPlans> Owned;
+  };
+  struct State
+  {
+    std::mutex Mutex;
+    std::map<std::array<int, 3>, Entry> Plans;
+  };
+
+  // Never destroyed: a kernel may be released by another library's static
+  // object after this one's statics are gone.
+  static State& Instance()
+  {
+    static State* state = new State;
+    return *state;
   }
 
-  static void Destroy(const TransformPlans& plans)
+  static void Destroy(const TransformPlans* plans) // with the lock held
   {
-    if (plans.Slab)
+    if (plans->Slab)
     {
-      fftw_destroy_plan(plans.Slab);
+      fftw_destroy_plan(plans->Slab);
     }
-    if (plans.Columns)
+    if (plans->Columns)
     {
-      fftw_destroy_plan(plans.Columns);
+      fftw_destroy_plan(plans->Columns);
     }
+    delete plans;
   }
-
-  std::mutex Mutex;
-  std::map<std::array<int, 3>, TransformPlans> Plans;
 };
 
 // One task's block of ColumnBlock columns along z, allocated on first use.
@@ -616,6 +632,7 @@ void vtkBlueNoiseSpectrumKernel::ReleaseBuffers()
   this->PowerInTransform = false;
   this->SlabPlan = nullptr;
   this->ColumnPlan = nullptr;
+  this->Plans = nullptr;
   this->SlabStride = 0;
   this->HalfSize = 0;
   std::fill(this->Dimensions, this->Dimensions + 3, 0);
@@ -664,15 +681,16 @@ bool vtkBlueNoiseSpectrumKernel::SetDimensions(int lx, int ly, int lz, std::stri
     return false;
   }
   const int dims[3] = { lx, ly, lz };
-  const TransformPlans plans = PlanCache::Instance().Get(dims, this->Transform);
-  if (!plans.Slab)
+  auto plans = PlanRegistry::Get(dims, this->Transform);
+  if (!plans)
   {
     this->ReleaseBuffers();
     SetError(error, "FFTW could not plan the transform");
     return false;
   }
-  this->SlabPlan = plans.Slab;
-  this->ColumnPlan = plans.Columns;
+  this->SlabPlan = plans->Slab;
+  this->ColumnPlan = plans->Columns;
+  this->Plans = std::move(plans);
   this->SlabStride = slabStride;
   std::copy(dims, dims + 3, this->Dimensions);
   this->HalfSize = static_cast<std::size_t>(ly) * lz * halfX;
@@ -1135,7 +1153,7 @@ double* vtkBlueNoiseSpectrumKernel::NewCenteredPowerSpectrum() const
 bool vtkBlueNoiseSpectrumKernel::Evaluate(
   const unsigned char* mask, const int dims[3], double weight, Result& out, std::string* error)
 {
-  thread_local vtkBlueNoiseSpectrumKernel kernel;
+  vtkBlueNoiseSpectrumKernel kernel;
   if (!kernel.SetDimensions(dims[0], dims[1], dims[2], error))
   {
     return false;

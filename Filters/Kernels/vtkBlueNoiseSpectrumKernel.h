@@ -65,7 +65,7 @@
  *
  * Cost: per realization, a real-to-complex FFT done as in-cache 2D transforms
  * of the z slabs followed by z transforms over small blocks of columns (FFTW,
- * plans cached per grid shape for the whole process), then per Compute() one
+ * plans shared per grid shape by the kernels that hold them), then per Compute() one
  * pass over the half spectrum. Slabs, column blocks and the rows of that pass
  * are spread over vtkSMPTools threads (as many as
  * vtkSMPTools::GetEstimatedNumberOfThreads(), e.g. VTK_SMP_MAX_THREADS with
@@ -97,6 +97,7 @@
 #include "vtkFiltersBlueNoiseModule.h" // for export macro
 
 #include <cstddef>
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -202,9 +203,9 @@ public:
   double* NewCenteredPowerSpectrum() const;
 
   /**
-   * One-call evaluation of a single mask for the optimizer. Reuses one kernel
-   * per calling thread, so repeated calls with the same shape allocate nothing;
-   * that kernel's buffers live until the thread ends.
+   * One-call evaluation of a single mask, with a kernel of its own (a loop
+   * over many masks of one shape saves the allocations with a kernel kept
+   * across Reset() instead).
    */
   static bool Evaluate(const unsigned char* mask, const int dims[3], double weight, Result& out,
     std::string* error = nullptr);
@@ -239,8 +240,9 @@ private:
   double* Transform = nullptr;
   double* PowerSum = nullptr;
   bool PowerInTransform = false;
-  void* SlabPlan = nullptr;   // fftw_plan, owned by the process-wide cache
-  void* ColumnPlan = nullptr; // fftw_plan, owned by the process-wide cache
+  void* SlabPlan = nullptr;   // fftw_plan, kept alive by Plans
+  void* ColumnPlan = nullptr; // fftw_plan, kept alive by Plans
+  std::shared_ptr<const void> Plans; // the shape's plans, shared with the kernels of that shape
 };
 
 #endif

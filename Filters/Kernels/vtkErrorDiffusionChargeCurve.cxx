@@ -78,9 +78,37 @@ const std::vector<KnownCurve>& KnownCurves()
   return curves;
 }
 
-// The curves used last, the most recent first.
-std::mutex CacheMutex;
-std::list<std::pair<std::vector<double>, std::shared_ptr<vtkErrorDiffusionChargeCurve>>> Cache;
+// The curves that kernels hold now. An entry owns no curve: the release of a
+// curve's last owner takes its entry out, so the registry is empty once no
+// kernel holds a curve.
+struct Entry
+{
+  std::vector<double> Key;
+  const vtkErrorDiffusionChargeCurve* Curve;
+  std::weak_ptr<vtkErrorDiffusionChargeCurve> Owned;
+};
+struct Registry
+{
+  std::mutex Mutex;
+  std::list<Entry> Entries;
+};
+
+// Never destroyed: a curve may be released by a static object of another
+// library after this one's statics are gone.
+Registry& Curves()
+{
+  static Registry* registry = new Registry;
+  return *registry;
+}
+
+void Release(vtkErrorDiffusionChargeCurve* curve)
+{
+  {
+    std::lock_guard<std::mutex> lock(Curves().Mutex);
+    Curves().Entries.remove_if([curve](const Entry& entry) { return entry.Curve == curve; });
+  }
+  delete curve;
+}
 }
 
 //------------------------------------------------------------------------------
@@ -88,21 +116,20 @@ std::shared_ptr<vtkErrorDiffusionChargeCurve> vtkErrorDiffusionChargeCurve::Get(
   const vtkErrorDiffusionParameterTable& table, double modulationScale)
 {
   std::vector<double> key = CurveKey(table, modulationScale);
-  std::lock_guard<std::mutex> lock(CacheMutex);
-  for (auto it = Cache.begin(); it != Cache.end(); ++it)
+  Registry& registry = Curves();
+  std::lock_guard<std::mutex> lock(registry.Mutex);
+  for (const Entry& entry : registry.Entries)
   {
-    if (SameKey(it->first, key))
+    // An expired entry's release is waiting for the lock: it is passed over.
+    std::shared_ptr<vtkErrorDiffusionChargeCurve> curve;
+    if (SameKey(entry.Key, key) && (curve = entry.Owned.lock()))
     {
-      Cache.splice(Cache.begin(), Cache, it);
-      return it->second;
+      return curve;
     }
   }
-  auto curve = std::make_shared<vtkErrorDiffusionChargeCurve>(table, modulationScale);
-  Cache.emplace_front(std::move(key), curve);
-  if (Cache.size() > CacheCapacity)
-  {
-    Cache.pop_back(); // its users keep it alive; the next Get calibrates anew
-  }
+  std::shared_ptr<vtkErrorDiffusionChargeCurve> curve(
+    new vtkErrorDiffusionChargeCurve(table, modulationScale), Release);
+  registry.Entries.push_front({ std::move(key), curve.get(), curve });
   return curve;
 }
 

@@ -37,12 +37,11 @@
  *
  * Cost and caching. A level costs a few sampled layers of its box (the low
  * levels need wide boxes) and is calibrated only when a density that needs
- * it comes up. Curves are
- * shared by every kernel of the process with the same table and scale (Get():
- * the same key values and scale bit for bit), and thread safe. The process
- * keeps the CacheCapacity curves used last (least recently used out first),
- * so that going back to an earlier scale or table, as a GUI user or a
- * parameter search does, finds its levels calibrated.
+ * it comes up. Get() shares one curve of a table and scale (the same key
+ * values and scale bit for bit) between the kernels that use it at the same
+ * time, thread safe; a curve lives as long as a kernel holds it (each kernel
+ * keeps the curves it used last, see vtkErrorDiffusionKernel), so nothing
+ * calibrated outlives the filters that use it.
  */
 #ifndef vtkErrorDiffusionChargeCurve_h
 #define vtkErrorDiffusionChargeCurve_h
@@ -58,10 +57,7 @@
 class VTKFILTERSBLUENOISE_EXPORT vtkErrorDiffusionChargeCurve
 {
 public:
-  /// Curves the process keeps for Get() (the least recently used go first).
-  static constexpr std::size_t CacheCapacity = 64;
-
-  /// The process-wide curve of this table and scale (created on first use).
+  /// The curve of this table and scale that a kernel holds, or a new one.
   static std::shared_ptr<vtkErrorDiffusionChargeCurve> Get(
     const vtkErrorDiffusionParameterTable& table, double modulationScale);
 

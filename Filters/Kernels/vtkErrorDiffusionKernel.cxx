@@ -4,6 +4,8 @@
 
 #include "vtkErrorDiffusionChargeCurve.h"
 
+#include <algorithm>
+
 //------------------------------------------------------------------------------
 vtkErrorDiffusionKernel::vtkErrorDiffusionKernel() = default;
 
@@ -14,6 +16,13 @@ vtkErrorDiffusionKernel::~vtkErrorDiffusionKernel() = default;
 void vtkErrorDiffusionKernel::PrepareCharges()
 {
   this->Charges = vtkErrorDiffusionChargeCurve::Get(this->GetParameters(), this->GetModulationScale());
+  auto& recent = this->Recent;
+  recent.erase(std::remove(recent.begin(), recent.end(), this->Charges), recent.end());
+  recent.insert(recent.begin(), this->Charges);
+  if (recent.size() > RecentCurves)
+  {
+    recent.pop_back();
+  }
 }
 
 //------------------------------------------------------------------------------

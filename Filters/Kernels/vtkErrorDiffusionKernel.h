@@ -11,6 +11,11 @@
  * a density first needs it). See vtkErrorDiffusionScan for the algorithm and
  * the interface.
  *
+ * The kernel keeps the RecentCurves curves it used last (the least recently
+ * used out first): a filter that keeps its kernel finds the levels it
+ * calibrated when its user goes back to an earlier table or scale, and the
+ * calibrations go with the kernel.
+ *
  * The dependencies go one way: the charge curve calibrates itself with a
  * plain vtkErrorDiffusionScan, and this class asks the curve.
  *
@@ -22,7 +27,9 @@
 #include "vtkErrorDiffusionScan.h"
 #include "vtkFiltersBlueNoiseModule.h" // for export macro
 
+#include <cstddef>
 #include <memory>
+#include <vector>
 
 class vtkErrorDiffusionChargeCurve;
 
@@ -34,13 +41,17 @@ public:
   vtkErrorDiffusionKernel& operator=(const vtkErrorDiffusionKernel&) = default;
   ~vtkErrorDiffusionKernel() override;
 
+  /// The number of charge curves a kernel keeps.
+  static constexpr std::size_t RecentCurves = 8;
+
 protected:
-  /// The curve of the current table and scale (shared by the process's kernels).
+  /// The curve of the current table and scale (shared by the kernels that hold it).
   void PrepareCharges() override;
   float ChargeAt(float minority) const override;
 
 private:
   std::shared_ptr<vtkErrorDiffusionChargeCurve> Charges;
+  std::vector<std::shared_ptr<vtkErrorDiffusionChargeCurve>> Recent; // most recent first
 };
 
 #endif

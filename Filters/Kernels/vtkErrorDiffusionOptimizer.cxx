@@ -48,9 +48,9 @@ bool Measure(const vtkErrorDiffusionParameterTable& table, double level,
   {
     inside.resize(static_cast<size_t>(inner) * inner * inner);
   }
+  vtkErrorDiffusionKernel kernel; // one for the seeds: one charge curve
   for (int s = 0; s < settings.Seeds; ++s)
   {
-    vtkErrorDiffusionKernel kernel;
     kernel.SetParameters(table);
     kernel.SetModulationScale(settings.ModulationScale);
     kernel.SetWarmUpLayers(settings.WarmUpLayers);

@@ -557,7 +557,8 @@ bool vtkErrorDiffusionSampler::StartRun(vtkInformation*, vtkInformationVector**)
     run.Density.SetRange(this->ScalarRange[0], this->ScalarRange[1]);
   }
   run.Statistics.Reset();
-  run.Kernel = vtkErrorDiffusionKernel();
+  // The kernel is kept from run to run with the charge curves it used last
+  // (Begin resets the rest).
   run.Kernel.SetParameters(table);
   run.Kernel.SetModulationScale(this->ModulationScale);
   run.Kernel.SetSeed(static_cast<std::uint64_t>(this->Seed));

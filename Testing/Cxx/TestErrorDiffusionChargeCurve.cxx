@@ -1,13 +1,14 @@
 // SPDX-FileCopyrightText: Copyright (c) 2025-2026 the BlueNoiseSampling contributors
 // SPDX-License-Identifier: BSD-3-Clause
-// The process-wide cache of charge curves (vtkErrorDiffusionChargeCurve::Get):
-// one curve per table and scale, bit for bit (scales equal to 6 digits once
-// shared a curve), the least recently used curve out first when the cache is
-// full while a curve in use stays, and one curve for threads asking at once;
+// The sharing of charge curves (vtkErrorDiffusionChargeCurve::Get): one curve
+// per table and scale, bit for bit (scales equal to 6 digits once shared a
+// curve), while somebody holds it and no longer; a kernel keeps the curves it
+// used last, and none after it is gone; one curve for threads asking at once;
 // a level's charge does not depend on the levels calibrated before it; the
 // known charges of the built-in tables are those a calibration gives.
 #include "BlueNoiseTestUtilities.h"
 #include "vtkErrorDiffusionChargeCurve.h"
+#include "vtkErrorDiffusionKernel.h"
 #include "vtkErrorDiffusionParameterTable.h"
 
 #include <algorithm>
@@ -88,26 +89,48 @@ void KnownCharges()
   }
 }
 
-void LeastRecentlyUsedOut()
+// A curve nobody holds is gone (the process keeps no calibration).
+void GoneWhenReleased()
 {
   const auto table = vtkErrorDiffusionParameterTable::Paper();
-  const std::size_t capacity = vtkErrorDiffusionChargeCurve::CacheCapacity;
-  // `kept` is asked for again and again, `old` once; both stay alive here, so
-  // that a new curve cannot take an evicted one's address.
-  const Curve kept = vtkErrorDiffusionChargeCurve::Get(table, 1.0 / 3.0);
-  const Curve old = vtkErrorDiffusionChargeCurve::Get(table, 2.0 / 3.0);
-  std::vector<Curve> others;
-  for (std::size_t i = 0; i < capacity; ++i)
+  std::weak_ptr<vtkErrorDiffusionChargeCurve> seen = vtkErrorDiffusionChargeCurve::Get(table, 0.9);
+  Check(seen.expired(), "a curve released by its only holder is gone");
+}
+
+// A kernel keeps the curves of its last RecentCurves tables and scales, the
+// least recently used out first, and none once it is gone.
+void KernelKeepsRecentCurves()
+{
+  const auto table = vtkErrorDiffusionParameterTable::Paper();
+  const std::size_t keep = vtkErrorDiffusionKernel::RecentCurves;
+  std::vector<std::weak_ptr<vtkErrorDiffusionChargeCurve>> seen;
   {
-    others.push_back(vtkErrorDiffusionChargeCurve::Get(table, 1.0 + 0.001 * static_cast<double>(i)));
-    Check(vtkErrorDiffusionChargeCurve::Get(table, 1.0 / 3.0) == kept,
-      "a curve asked for all along stays (after " + Str(i + 1) + " others)");
+    vtkErrorDiffusionKernel kernel;
+    kernel.SetParameters(table);
+    const auto use = [&](std::size_t i) {
+      kernel.SetModulationScale(1.0 + 0.001 * static_cast<double>(i));
+      kernel.Begin(4, 4); // takes the curve of its table and scale
+      return std::weak_ptr<vtkErrorDiffusionChargeCurve>(
+        vtkErrorDiffusionChargeCurve::Get(table, 1.0 + 0.001 * static_cast<double>(i)));
+    };
+    for (std::size_t i = 0; i < keep; ++i)
+    {
+      seen.push_back(use(i));
+      // The first scale, used again after each other one, stays.
+      Check(use(0).lock() == seen[0].lock() && !seen[0].expired(),
+        "the curve used all along stays (after " + Str(i) + " others)");
+    }
+    Check(!seen[keep - 1].expired(), "the curve used last but one stays");
+    seen.push_back(use(keep));
+    Check(seen[1].expired(), "the least recently used curve went after " + Str(keep) + " others");
+    Check(!seen[0].expired() && !seen[2].expired(), "the recent curves stay");
   }
-  Check(vtkErrorDiffusionChargeCurve::Get(table, 2.0 / 3.0) != old,
-    "the least recently used curve went after " + Str(capacity) + " others");
-  Check(vtkErrorDiffusionChargeCurve::Get(table, 1.0 + 0.001 * static_cast<double>(capacity - 1)) ==
-      others.back(),
-    "a recent curve stays");
+  bool any = false;
+  for (const auto& curve : seen)
+  {
+    any = any || !curve.expired();
+  }
+  Check(!any, "no curve outlives the kernel that held it");
 }
 
 void ThreadsShareCurves()
@@ -144,7 +167,8 @@ int main()
   OneCurvePerKey();
   OrderFree();
   KnownCharges();
-  LeastRecentlyUsedOut();
+  GoneWhenReleased();
+  KernelKeepsRecentCurves();
   ThreadsShareCurves();
   return Summary("TestErrorDiffusionChargeCurve");
 }

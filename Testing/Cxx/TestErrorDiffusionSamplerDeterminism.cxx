@@ -6,6 +6,7 @@
 // of the same values as floats. A re-execution writes a large output into
 // the last output's memory, or, when a shallow copy held that output (as
 // ParaView's post filter does), into that memory once the copy lets it go.
+// A filter re-executed after other settings gives a fresh filter's points.
 #include "SamplerTestUtilities.h"
 #include "vtkCallbackCommand.h"
 #include "vtkCommand.h"
@@ -217,6 +218,21 @@ int main()
   sampler->SetSeed(7);
   sampler->Update();
   Check(SamePoints(sampler->GetOutput(), first), "seed restored gives the first points again");
+  // The filter keeps its kernel (and the charge curves it used) from run to
+  // run: after runs with another table, scale and method, a fresh filter's
+  // points.
+  sampler->SetParameterSet(vtkErrorDiffusionSampler::PARAMETERS_PAPER);
+  sampler->SetModulationScale(0.75);
+  sampler->SetMethodToErrorDiffusion();
+  sampler->Update();
+  sampler->SetMethodToWhiteNoise();
+  sampler->Update();
+  sampler->SetParameterSet(vtkErrorDiffusionSampler::PARAMETERS_OPTIMIZED);
+  sampler->SetModulationScale(0.5);
+  sampler->SetMethodToRelaxedErrorDiffusion();
+  sampler->Update();
+  Check(SamePoints(sampler->GetOutput(), first),
+    "after runs with other tables, scales and methods: the first points again");
 
   // A re-execution writes into the last output's arrays when nothing else
   // holds them (the same array objects), and leaves alone what another

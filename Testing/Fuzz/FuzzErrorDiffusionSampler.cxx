@@ -44,9 +44,11 @@
 #include <cstring>
 #include <fstream>
 #include <iostream>
+#include <memory>
 #include <random>
 #include <string>
 #include <unistd.h>
+#include <vector>
 
 using namespace bluenoise_fuzz;
 
@@ -325,15 +327,18 @@ void CheckGoodUpdate(vtkErrorDiffusionSampler* sampler, MessageObserver* observe
 }
 }
 
-/// Calibrates the charge curves of the built-in tables at the fixed scales.
+/// Calibrates the charge curves of the built-in tables at the fixed scales,
+/// held for the whole run: the samplers' kernels find them (Get).
 extern "C" int LLVMFuzzerInitialize(int*, char***)
 {
+  static std::vector<std::shared_ptr<vtkErrorDiffusionChargeCurve>> held;
   for (const auto& table : { vtkErrorDiffusionParameterTable::Paper(),
          vtkErrorDiffusionParameterTable::Fixed(), vtkErrorDiffusionParameterTable::Optimized() })
   {
     for (double scale : FixedScales)
     {
-      vtkErrorDiffusionChargeCurve::Get(table, scale)->GetCharges();
+      held.push_back(vtkErrorDiffusionChargeCurve::Get(table, scale));
+      held.back()->GetCharges();
     }
   }
   return 0;
