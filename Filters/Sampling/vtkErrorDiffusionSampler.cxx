@@ -630,26 +630,20 @@ bool vtkErrorDiffusionSampler::FinishStatistics()
   {
     return false;
   }
-  const char* note = nullptr;
-  run.Density.Finish(run.NeedsStatistics ? &run.Statistics : nullptr, &note);
-  if (note)
+  const auto budget = this->UseNumberOfPoints
+    ? vtkSamplingDensity::Budget::Points(static_cast<double>(this->NumberOfPoints))
+    : vtkSamplingDensity::Budget::Scale(this->DensityScale);
+  const auto outcome = run.Density.Finish(run.NeedsStatistics ? &run.Statistics : nullptr, budget);
+  if (outcome.Note)
   {
-    vtkWarningMacro("Density: " << note << ".");
+    vtkWarningMacro("Density: " << outcome.Note << ".");
   }
-  if (!this->UseNumberOfPoints)
-  {
-    run.Density.SetScale(this->DensityScale);
-    return true;
-  }
-  const auto solution =
-    run.Statistics.Solve(static_cast<double>(this->NumberOfPoints), run.Density.GetLinearMap());
-  if (solution.OutOfReach)
+  if (outcome.OutOfReach)
   {
     vtkWarningMacro("NumberOfPoints " << this->NumberOfPoints << " is more than the volume can "
-                                      << "hold: at most " << solution.Reachable
+                                      << "hold: at most " << outcome.Reachable
                                       << " voxels have a positive density, and all are sampled.");
   }
-  run.Density.SetScale(solution.Scale);
   return true;
 }
 

@@ -628,16 +628,37 @@ void vtkSamplingDensity::SpareTallies::Give(std::unique_ptr<vtkSamplingBudget::F
 }
 
 //------------------------------------------------------------------------------
-void vtkSamplingDensity::Finish(const vtkSamplingBudget* statistics, const char** note)
+vtkSamplingDensity::Outcome vtkSamplingDensity::Finish(
+  const vtkSamplingBudget* statistics, const Budget& budget)
 {
-  if (note)
+  Outcome outcome;
+  outcome.Note = this->FixLinearMap(statistics);
+  if (!budget.ByPoints)
   {
-    *note = nullptr;
+    this->Scale = budget.Value;
+    return outcome;
   }
+  if (!statistics)
+  {
+    this->Scale = 0.0; // nothing counted: no density can be scaled to the points
+    return outcome;
+  }
+  const auto solution = statistics->Solve(budget.Value, this->Map);
+  this->Scale = solution.Scale;
+  outcome.OutOfReach = solution.OutOfReach;
+  outcome.Reachable = solution.Reachable;
+  return outcome;
+}
+
+//------------------------------------------------------------------------------
+// The linear map of SCALAR_RANGE from the set range, or else the statistics'
+// finite range; the identity for the other mappings. Returns a note or nullptr.
+const char* vtkSamplingDensity::FixLinearMap(const vtkSamplingBudget* statistics)
+{
   this->Map = vtkSamplingBudget::Mapping();
   if (this->Mode != SCALAR_RANGE)
   {
-    return;
+    return nullptr;
   }
   if (!this->RangeSet)
   {
@@ -646,7 +667,7 @@ void vtkSamplingDensity::Finish(const vtkSamplingBudget* statistics, const char*
     {
       this->Map.A = 0.0; // no finite value: nothing to sample
       this->Map.B = 0.0;
-      return;
+      return nullptr;
     }
     this->Range[0] = range[0];
     this->Range[1] = range[1];
@@ -656,16 +677,13 @@ void vtkSamplingDensity::Finish(const vtkSamplingBudget* statistics, const char*
     // A single value is the top of its own range: uniform density.
     this->Map.A = 0.0;
     this->Map.B = 1.0;
-    if (note)
-    {
-      *note = "the scalar range has zero width: every voxel gets the same density";
-    }
-    return;
+    return "the scalar range has zero width: every voxel gets the same density";
   }
   // Halved first, so that hi - lo cannot overflow (a range of +-1e308).
   const double width = 0.5 * this->Range[1] - 0.5 * this->Range[0];
   this->Map.A = 0.5 / width;
   this->Map.B = -0.5 * this->Range[0] / width;
+  return nullptr;
 }
 
 //------------------------------------------------------------------------------

@@ -78,17 +78,48 @@ public:
   void CollectStatistics(vtkDataArray* array, vtkIdType begin, vtkIdType end,
     const unsigned char* ghosts, vtkSamplingBudget& statistics, int threads = 1) const;
 
+  /// What the densities of a run add up to: a scale set by hand, or the
+  /// scale that makes them a number of points.
+  struct Budget
+  {
+    static Budget Scale(double scale)
+    {
+      Budget b;
+      b.Value = scale;
+      return b;
+    }
+    static Budget Points(double points)
+    {
+      Budget b;
+      b.ByPoints = true;
+      b.Value = points;
+      return b;
+    }
+    bool ByPoints = false;
+    double Value = 1.0;
+  };
+
+  /// What Finish found besides the scale.
+  struct Outcome
+  {
+    const char* Note = nullptr; ///< a warning to give (a constant array), or nullptr
+    bool OutOfReach = false;    ///< more points asked for than the volume can hold
+    double Reachable = 0.0;     ///< voxels of positive density (every one drawn then)
+  };
+
   /**
    * After the statistics (when needed): take the finite range from them
-   * (when no range is set) and fix the linear map. Returns the warning to
-   * give, if any (a constant array), in `note`.
+   * (when no range is set), fix the linear map, and set the scale the budget
+   * asks for: the given one, or the one whose densities add up to the number
+   * of points (vtkSamplingBudget::Solve over the statistics, which a budget
+   * in points needs, see NeedsStatistics).
    */
-  void Finish(const vtkSamplingBudget* statistics, const char** note = nullptr);
+  Outcome Finish(const vtkSamplingBudget* statistics, const Budget& budget);
 
   /// The map from x to the unscaled density a x + b.
   vtkSamplingBudget::Mapping GetLinearMap() const { return this->Map; }
 
-  void SetScale(double s) { this->Scale = s; }
+  /// The scale Finish set.
   double GetScale() const { return this->Scale; }
 
   /**
@@ -99,6 +130,8 @@ public:
     float* out) const;
 
 private:
+  const char* FixLinearMap(const vtkSamplingBudget* statistics);
+
   int Mode = SCALAR_RANGE;
   int Component = 0;
   vtkPiecewiseFunction* Function = nullptr; // not owned: the caller keeps it alive

@@ -24,6 +24,7 @@
 #include "vtkSignedCharArray.h"
 #include "vtkUnsignedCharArray.h"
 
+#include <algorithm>
 #include <cmath>
 #include <cstring>
 #include <limits>
@@ -67,8 +68,7 @@ bool CheckFills(vtkDataArray* array, int component, const std::vector<double>& v
 {
   vtkSamplingDensity density;
   density.SetMapping(vtkSamplingDensity::IDENTITY, component);
-  density.Finish(nullptr);
-  density.SetScale(scale);
+  density.Finish(nullptr, vtkSamplingDensity::Budget::Scale(scale));
   const auto map = density.GetLinearMap();
   bool ok = true;
   const vtkIdType n = static_cast<vtkIdType>(values.size());
@@ -171,6 +171,38 @@ bool CheckFloatStatistics()
   }
   return Check(same, "float statistics, runs counted four at a time");
 }
+
+// A budget in points: the scale that makes the densities of the scalar
+// range's map add up to it, found in one call; more points than voxels of
+// positive density: every one of them, and said so.
+bool CheckPointBudget()
+{
+  std::vector<double> values;
+  for (int k = 0; k < 500; ++k)
+  {
+    values.push_back(static_cast<double>((k * 37) % 101));
+  }
+  const auto array = Array<vtkFloatArray>(values, 1, 0);
+  vtkSamplingDensity density;
+  density.SetMapping(vtkSamplingDensity::SCALAR_RANGE, 0);
+  vtkSamplingBudget statistics;
+  const auto n = static_cast<vtkIdType>(values.size());
+  density.CollectStatistics(array, 0, n, nullptr, statistics);
+  auto outcome = density.Finish(&statistics, vtkSamplingDensity::Budget::Points(40.0));
+  std::vector<float> out(values.size());
+  const double sum = density.Fill(array, 0, n, nullptr, out.data());
+  bool ok = Check(std::abs(sum - 40.0) < 1e-3 && !outcome.OutOfReach && !outcome.Note,
+    "a budget of 40 points: densities adding up to " + Str(sum));
+  ok = Check(density.GetScale() == statistics.Solve(40.0, density.GetLinearMap()).Scale,
+         "the scale is the statistics' solution") &&
+    ok;
+  outcome = density.Finish(&statistics, vtkSamplingDensity::Budget::Points(1e6));
+  const double positive = static_cast<double>(
+    std::count_if(values.begin(), values.end(), [](double v) { return v > 0.0; }));
+  return Check(outcome.OutOfReach && outcome.Reachable == positive,
+           "a budget beyond reach: " + Str(outcome.Reachable) + " voxels of positive density") &&
+    ok;
+}
 }
 
 int main()
@@ -223,5 +255,6 @@ int main()
   CheckByteStatistics<vtkUnsignedCharArray>(ByteRuns(0), "unsigned char statistics");
   CheckByteStatistics<vtkSignedCharArray>(ByteRuns(-128), "signed char statistics");
   CheckFloatStatistics();
+  CheckPointBudget();
   return Summary("TestSamplingDensity");
 }
