@@ -183,36 +183,26 @@ vtkErrorDiffusionLayerRunner::Layer vtkErrorDiffusionLayerRunner::LayerOf(int k,
 vtkIdType vtkErrorDiffusionLayerRunner::ScanLayer(vtkErrorDiffusionKernel& kernel, int k)
 {
   const bool hasNext = k + 1 < this->Layers || this->LastHasNext;
-  unsigned char* mask = this->MaskStorage ? this->MaskStorage(k) : nullptr;
+  unsigned char* mask = this->Work->MaskStorage(k);
   if (!mask)
   {
     mask = this->Masks.data() + static_cast<size_t>(k % this->Slots) * this->LayerSize;
   }
   this->LayerMasks[k % this->Slots] = mask; // published to the consumer with the count
-  if (this->BeforeScan)
-  {
-    this->BeforeScan(k, this->DensitySlot(k));
-  }
+  this->Work->BeforeScan(k, this->DensitySlot(k));
   return kernel.ProcessLayer(
     this->DensitySlot(k), hasNext ? this->DensitySlot(k + 1) : nullptr, mask);
 }
 
 //------------------------------------------------------------------------------
 bool vtkErrorDiffusionLayerRunner::Run(
-  vtkErrorDiffusionKernel& kernel, int nx, int ny, int nz, bool lastHasNext)
+  vtkErrorDiffusionKernel& kernel, Stages& stages, int nx, int ny, int nz, bool lastHasNext)
 {
   this->Error.clear();
-  if (!this->Fill || !this->Consume)
-  {
-    this->Error = "vtkErrorDiffusionLayerRunner needs a Fill and a Consume function.";
-    return false;
-  }
+  this->Work = &stages;
   if (nx <= 0 || ny <= 0 || nz <= 0)
   {
-    if (this->Finish)
-    {
-      this->Finish(0);
-    }
+    stages.Finish(0);
     return true;
   }
   this->Layers = nz;
@@ -235,6 +225,7 @@ bool vtkErrorDiffusionLayerRunner::Run(
   const bool done = this->Threaded ? this->RunThreaded(kernel) : this->RunSequential(kernel);
   this->Densities = std::vector<float>();
   this->Masks = std::vector<unsigned char>();
+  this->Work = nullptr;
   return done;
 }
 
@@ -244,24 +235,21 @@ bool vtkErrorDiffusionLayerRunner::RunSequential(vtkErrorDiffusionKernel& kernel
   try
   {
     vtkIdType total = 0;
-    this->Fill(0, this->DensitySlot(0));
+    this->Work->Fill(0, this->DensitySlot(0));
     for (int k = 0; k < this->Layers; ++k)
     {
       if (k + 1 < this->Layers || this->LastHasNext)
       {
-        this->Fill(k + 1, this->DensitySlot(k + 1));
+        this->Work->Fill(k + 1, this->DensitySlot(k + 1));
       }
       const vtkIdType count = this->ScanLayer(kernel, k);
       total += count;
-      if (!this->Consume(this->LayerOf(k, count)))
+      if (!this->Work->Consume(this->LayerOf(k, count)))
       {
         return false;
       }
     }
-    if (this->Finish)
-    {
-      this->Finish(total);
-    }
+    this->Work->Finish(total);
     return true;
   }
   catch (...)
@@ -314,8 +302,7 @@ bool vtkErrorDiffusionLayerRunner::FillUpTo(ThreadState& state, int target)
 bool vtkErrorDiffusionLayerRunner::WaitForSlot(ThreadState& state, int k)
 {
   const int consumed = k - this->Slots + 1;
-  while (this->Idle && state.Consumed.Get() < consumed && !state.Failed.Stop.load() &&
-    this->Idle())
+  while (state.Consumed.Get() < consumed && !state.Failed.Stop.load() && this->Work->Idle())
   {
   }
   return state.Consumed.WaitFor(consumed, state.Failed.Stop);
@@ -326,7 +313,7 @@ bool vtkErrorDiffusionLayerRunner::WaitForSlot(ThreadState& state, int k)
 // state.Filling.
 void vtkErrorDiffusionLayerRunner::FillNext(ThreadState& state)
 {
-  this->Fill(state.Next, this->DensitySlot(state.Next));
+  this->Work->Fill(state.Next, this->DensitySlot(state.Next));
   ++state.Next;
   state.Filled.Advance(state.Next);
 }
@@ -371,10 +358,7 @@ void vtkErrorDiffusionLayerRunner::ScanAll(vtkErrorDiffusionKernel& kernel, Thre
       state.Counts[k % this->Slots] = count;
       state.Scanned.Advance(k + 1);
     }
-    if (this->Finish)
-    {
-      this->Finish(total);
-    }
+    this->Work->Finish(total);
   }
   catch (...)
   {
@@ -395,7 +379,7 @@ bool vtkErrorDiffusionLayerRunner::ConsumeAll(ThreadState& state)
       {
       }
       const bool consumed = state.Scanned.WaitFor(k + 1, state.Failed.Stop) &&
-        this->Consume(this->LayerOf(k, state.Counts[k % this->Slots]));
+        this->Work->Consume(this->LayerOf(k, state.Counts[k % this->Slots]));
       state.Consumed.Advance(k + 1);
       if (!consumed)
       {

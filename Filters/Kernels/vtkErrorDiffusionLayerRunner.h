@@ -16,22 +16,25 @@
  * scan's, where consuming costs more, as the relaxation does; the calling
  * thread's otherwise). Work the consumer leaves behind can go the same way:
  * while the scan thread waits for the consumer to free a buffer, it calls
- * Idle() (if set) until that returns false. The calling thread is the one
+ * Idle() until that returns false. The calling thread is the one
  * that consumes, so a consumer may report progress and check for abort the
  * way a VTK filter must (from the thread that called it). The worker is a
  * std::thread of the runner's own (a two-stage pipeline, which vtkSMPTools
  * does not express); the caller decides whether to use it
  * (vtkBlueNoiseThreads::Available() says whether there is a second core).
  *
- * Per layer k (0-based in the run) the runner asks Fill(k, density) for the
- * densities (the kernel also needs the next layer's, so Fill runs at least one
- * layer ahead of the scan), calls BeforeScan(k, density) if set, lets the
- * kernel sample layer k into the layer's mask (the buffer MaskStorage(k)
- * returns, or one of the runner's own when it returns nullptr or is not set),
- * then calls Consume with the layer's densities, mask and count. The buffers
- * of a layer stay valid until Consume returns. After the last layer
- * Finish(total) runs on the scan thread (it may start before the consumer has
- * caught up): a place for work that needs only the number of samples.
+ * What the run does around the scan comes from a Stages object, as the work
+ * of a vtkSMPTools loop comes from its functor: the runner knows nothing of
+ * who implements it. Per layer k (0-based in the run) the runner asks
+ * Fill(k, density) for the densities (the kernel also needs the next
+ * layer's, so Fill runs at least one layer ahead of the scan), calls
+ * BeforeScan(k, density), lets the kernel sample layer k into the layer's
+ * mask (the buffer MaskStorage(k) returns, or one of the runner's own when it
+ * returns nullptr), then calls Consume with the layer's densities, mask and
+ * count. The buffers of a layer stay valid until Consume returns. After the
+ * last layer Finish(total) runs on the scan thread (it may start before the
+ * consumer has caught up): a place for work that needs only the number of
+ * samples.
  *
  * Waiting: a thread that waits for the other spins for a few microseconds and
  * then sleeps, and is woken only when it sleeps, so a machine whose other
@@ -45,9 +48,9 @@
  * Consume runs on the calling thread; Fill on either thread, one call at a
  * time, in layer order; MaskStorage, BeforeScan, Finish and Idle on the scan
  * thread, and must not touch what the others touch (Idle, which runs while
- * Consume does, synchronizes with it itself). An
- * exception thrown by any callback stops the run; Run then returns false and
- * GetError() says what was thrown.
+ * Consume does, synchronizes with it itself). An exception thrown by any
+ * stage stops the run; Run then returns false and GetError() says what was
+ * thrown.
  */
 #ifndef vtkErrorDiffusionLayerRunner_h
 #define vtkErrorDiffusionLayerRunner_h
@@ -55,7 +58,6 @@
 #include "vtkFiltersBlueNoiseModule.h" // for export macro
 #include "vtkType.h"                   // for vtkIdType
 
-#include <functional>
 #include <string>
 #include <vector>
 
@@ -73,33 +75,39 @@ public:
     vtkIdType Count = 0;                 ///< samples in the layer
   };
 
-  using FillFunction = std::function<void(int layer, float* density)>;
-  using MaskFunction = std::function<unsigned char*(int layer)>;
-  using ConsumeFunction = std::function<bool(const Layer& layer)>; ///< false stops the run
-  using FinishFunction = std::function<void(vtkIdType samples)>;
-  using BeforeScanFunction = std::function<void(int layer, const float* density)>;
-  using IdleFunction = std::function<bool()>; ///< false: nothing to do
+  /// The work around the scan (see the class comment for the threads).
+  class Stages
+  {
+  public:
+    virtual ~Stages() = default;
+    /// The densities of layer k into `density` (nx * ny values).
+    virtual void Fill(int layer, float* density) = 0;
+    /// A finished layer, on the calling thread; false stops the run.
+    virtual bool Consume(const Layer& layer) = 0;
+    /// Where the kernel writes layer k's mask; nullptr: a buffer of the runner's.
+    virtual unsigned char* MaskStorage(int) { return nullptr; }
+    /// Just before layer k is scanned.
+    virtual void BeforeScan(int, const float*) {}
+    /// Work for the scan thread while the consumer is behind (threaded runs
+    /// only); false when there is none.
+    virtual bool Idle() { return false; }
+    /// After the last layer is scanned, with the number of samples.
+    virtual void Finish(vtkIdType) {}
+  };
 
-  void SetFill(FillFunction f) { this->Fill = std::move(f); }
-  void SetMaskStorage(MaskFunction f) { this->MaskStorage = std::move(f); }
-  void SetConsume(ConsumeFunction f) { this->Consume = std::move(f); }
-  void SetFinish(FinishFunction f) { this->Finish = std::move(f); }
-  /// Called on the scan thread just before layer k is scanned (optional).
-  void SetBeforeScan(BeforeScanFunction f) { this->BeforeScan = std::move(f); }
-  /// Work for the scan thread while the consumer is behind (optional; threaded runs only).
-  void SetIdle(IdleFunction f) { this->Idle = std::move(f); }
   void SetThreaded(bool threaded) { this->Threaded = threaded; }
   bool GetThreaded() const { return this->Threaded; }
 
   /**
    * Samples nz layers of nx * ny voxels with a kernel on which Begin() was
    * called for that shape (it may have sampled layers before: a run can be
-   * one slab of a volume). The last layer's successor is layer nz (filled
-   * with Fill) when lastHasNext, none otherwise. Fill and Consume are
-   * required. Returns true when every layer was consumed and Finish ran;
-   * false when Consume stopped the run or a callback threw (see GetError()).
+   * one slab of a volume), with `stages` around the scan. The last layer's
+   * successor is layer nz (filled with Fill) when lastHasNext, none
+   * otherwise. Returns true when every layer was consumed and Finish ran;
+   * false when Consume stopped the run or a stage threw (see GetError()).
    */
-  bool Run(vtkErrorDiffusionKernel& kernel, int nx, int ny, int nz, bool lastHasNext = false);
+  bool Run(vtkErrorDiffusionKernel& kernel, Stages& stages, int nx, int ny, int nz,
+    bool lastHasNext = false);
 
   /// Why the last Run failed; empty when it did not, or when Consume stopped it.
   const std::string& GetError() const { return this->Error; }
@@ -118,12 +126,7 @@ private:
   Layer LayerOf(int k, vtkIdType count);
   float* DensitySlot(int k);
 
-  FillFunction Fill;
-  MaskFunction MaskStorage;
-  ConsumeFunction Consume;
-  FinishFunction Finish;
-  BeforeScanFunction BeforeScan;
-  IdleFunction Idle;
+  Stages* Work = nullptr; // during Run
   bool Threaded = false;
   std::string Error;
 

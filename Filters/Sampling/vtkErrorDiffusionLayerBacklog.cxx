@@ -5,10 +5,10 @@
 #include <limits>
 
 //------------------------------------------------------------------------------
-void vtkErrorDiffusionLayerBacklog::SetEmit(EmitFunction emit)
+void vtkErrorDiffusionLayerBacklog::SetSink(Sink* sink)
 {
   this->Clear();
-  this->Emit = std::move(emit);
+  this->Output = sink;
   this->Pushes = 0;
 }
 
@@ -46,7 +46,7 @@ bool vtkErrorDiffusionLayerBacklog::EmitOne()
   {
     return false;
   }
-  this->Emit(layer);
+  this->Output->Emit(layer);
   return true;
 }
 
@@ -65,7 +65,7 @@ void vtkErrorDiffusionLayerBacklog::EmitThrough(long push)
   std::lock_guard<std::mutex> emitting(this->Emitting);
   for (Layer layer; this->Take(push, layer);)
   {
-    this->Emit(layer);
+    this->Output->Emit(layer);
   }
 }
 

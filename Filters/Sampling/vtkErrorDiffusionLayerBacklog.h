@@ -9,7 +9,8 @@
  * thread that relaxes is busy while the scan thread waits for it. Turning a
  * final layer into points (Emit) need not wait on the relaxation, so the
  * relaxing thread queues the layers Push returns (AfterPush) and the scan
- * thread emits them while it waits (EmitOne, from the layer runner's Idle).
+ * thread emits them to the Sink while it waits (EmitOne, from the layer
+ * runner's Idle).
  *
  * A layer the relaxation returns keeps its buffers through the next Push only
  * (vtkBlueNoiseRelaxation's promise): BeforePush, called before each Push,
@@ -31,7 +32,6 @@
 #include "vtkFiltersBlueNoiseModule.h" // for export macro
 
 #include <deque>      // for std::deque
-#include <functional> // for std::function
 #include <mutex>      // for std::mutex
 #include <vector>     // for std::vector
 
@@ -39,10 +39,17 @@ class VTKFILTERSBLUENOISE_EXPORT vtkErrorDiffusionLayerBacklog
 {
 public:
   using Layer = vtkBlueNoiseRelaxation::Layer;
-  using EmitFunction = std::function<void(const Layer& layer)>;
 
-  /// What to do with each final layer; set before the first one (empties the queue).
-  void SetEmit(EmitFunction emit);
+  /// Where the final layers go.
+  class Sink
+  {
+  public:
+    virtual ~Sink() = default;
+    virtual void Emit(const Layer& layer) = 0;
+  };
+
+  /// Where each final layer goes (not owned); set before the first one (empties the queue).
+  void SetSink(Sink* sink);
 
   /// Before each Push: emits the layers it could overwrite.
   void BeforePush();
@@ -68,7 +75,7 @@ private:
   void EmitThrough(long push);
   bool Take(long push, Layer& layer);
 
-  EmitFunction Emit;
+  Sink* Output = nullptr;
   std::mutex Queue;    // guards Entries
   std::mutex Emitting; // held while a layer is taken and emitted
   std::deque<Entry> Entries;

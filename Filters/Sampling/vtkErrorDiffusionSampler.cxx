@@ -138,9 +138,11 @@ bool SelectTable(
 //------------------------------------------------------------------------------
 // The state of one run: its plan (which layers each step reads) and what is
 // carried from one step (one execution of a streamed run) to the next.
-class vtkErrorDiffusionSampler::vtkInternals
+class vtkErrorDiffusionSampler::vtkInternals : public vtkErrorDiffusionLayerBacklog::Sink
 {
 public:
+  class SlabScan;
+
   struct Step
   {
     bool Statistics = false;
@@ -174,6 +176,49 @@ public:
   bool AssemblerStarted = false;
   double ProgressTotal = 1.0;
   double ProgressDone = 0.0;
+
+  // A final layer of samples: into the points, and into the mask unless the
+  // kernel wrote it there. From the calling thread, or from the scan thread
+  // for a relaxed layer (the backlog emits one layer at a time, under its
+  // lock).
+  void Emit(int z, const float* density, const unsigned char* mask, vtkIdType count)
+  {
+    this->Assembler.AddLayer(z, density, mask, count);
+    if (this->Mask)
+    {
+      unsigned char* stored = this->Mask->GetPointer((z - this->Sampled[4]) * this->LayerSize());
+      if (stored != mask)
+      {
+        std::copy(mask, mask + this->LayerSize(), stored);
+      }
+    }
+  }
+
+  void Emit(const vtkBlueNoiseRelaxation::Layer& layer) override
+  {
+    this->Emit(layer.Z, layer.Density, layer.Mask, layer.Count);
+  }
+
+  // A layer the scan finished: final, or on to the relaxation first.
+  void Receive(int z, const float* density, const unsigned char* mask, vtkIdType count)
+  {
+    if (z < this->Sampled[4])
+    {
+      return; // an overlap layer: it only settles the scan
+    }
+    if (!this->Relaxing)
+    {
+      this->Emit(z, density, mask, count);
+      return;
+    }
+    this->Backlog.BeforePush();
+    this->Backlog.AfterPush(this->Relaxation.Push(z, density, mask));
+    if (z == this->Sampled[5])
+    {
+      this->Backlog.AfterPush(this->Relaxation.Flush());
+      this->Backlog.EmitAll();
+    }
+  }
 
   int NX() const { return this->Whole[1] - this->Whole[0] + 1; }
   int NY() const { return this->Whole[3] - this->Whole[2] + 1; }
@@ -676,59 +721,93 @@ bool vtkErrorDiffusionSampler::StartAssembly(vtkImageData* input)
     run.Mask->SetName("SampleMask");
     run.Mask->SetNumberOfValues(run.LayerSize() * run.SampledLayers());
   }
-  if (this->Method == METHOD_RELAXED_ERROR_DIFFUSION)
+  if (run.Relaxing)
   {
     run.Relaxation.Begin(run.NX(), run.NY(), run.Sampled[4], static_cast<std::uint64_t>(this->Seed));
-    run.Backlog.SetEmit([this](const vtkBlueNoiseRelaxation::Layer& layer) {
-      this->Emit(layer.Z, layer.Density, layer.Mask, layer.Count);
-    });
+    run.Backlog.SetSink(&run);
   }
   run.AssemblerStarted = true;
   return true;
 }
 
 //------------------------------------------------------------------------------
-// A final layer of samples: into the points, and into the mask unless the
-// kernel wrote it there. From the calling thread, or from the scan thread for
-// a relaxed layer (the backlog emits one layer at a time, under its lock).
-void vtkErrorDiffusionSampler::Emit(
-  int z, const float* density, const unsigned char* mask, vtkIdType count)
+// The stages of one slab's scan (vtkErrorDiffusionLayerRunner): densities from
+// the input, finished layers to the output (through the relaxation for the
+// default method), progress and abort from the calling thread.
+class vtkErrorDiffusionSampler::vtkInternals::SlabScan
+  : public vtkErrorDiffusionLayerRunner::Stages
 {
-  vtkInternals& run = *this->Internals;
-  run.Assembler.AddLayer(z, density, mask, count);
-  if (run.Mask)
+public:
+  SlabScan(vtkErrorDiffusionSampler* filter, vtkImageData* input, vtkDataArray* array)
+    : Filter(filter)
+    , Run(*filter->Internals)
+    , Slab(Run.Steps[Run.Current])
+    , Array(array)
+    , LayerSize(Run.LayerSize())
+    , Overlap(Run.ScanFirst < Run.Sampled[4])
+    , ProgressStride(std::max(1, (Slab.Last - Slab.First + 1) / 100))
   {
-    unsigned char* stored = run.Mask->GetPointer((z - run.Sampled[4]) * run.LayerSize());
-    if (stored != mask)
+    input->GetExtent(this->Extent);
+    vtkUnsignedCharArray* ghosts = input->GetPointGhostArray();
+    this->Ghosts = ghosts ? ghosts->GetPointer(0) : nullptr;
+  }
+
+  void Fill(int k, float* density) override
+  {
+    const int z = this->Slab.First + k;
+    const vtkIdType begin = (z - this->Extent[4]) * this->LayerSize;
+    const double sum =
+      this->Run.Density.Fill(this->Array, begin, begin + this->LayerSize, this->Ghosts, density);
+    if (z >= this->Run.Sampled[4] && z <= this->Run.Sampled[5])
     {
-      std::copy(mask, mask + run.LayerSize(), stored);
+      this->Run.LayerSums[z - this->Run.Sampled[4]] = sum;
     }
   }
-}
 
-//------------------------------------------------------------------------------
-// A layer the scan finished: final, or on to the relaxation first.
-void vtkErrorDiffusionSampler::Receive(
-  int z, const float* density, const unsigned char* mask, vtkIdType count)
-{
-  vtkInternals& run = *this->Internals;
-  if (z < run.Sampled[4])
+  // The kernel writes a final layer's mask straight into the mask output
+  // (not a relaxed one: the relaxation moves samples first).
+  unsigned char* MaskStorage(int k) override
   {
-    return; // an overlap layer: it only settles the scan
+    const int z = this->Slab.First + k;
+    if (!this->Run.Mask || this->Run.Relaxing || z < this->Run.Sampled[4])
+    {
+      return nullptr;
+    }
+    return this->Run.Mask->GetPointer((z - this->Run.Sampled[4]) * this->LayerSize);
   }
-  if (this->Method != METHOD_RELAXED_ERROR_DIFFUSION)
+
+  void BeforeScan(int k, const float* density) override
   {
-    this->Emit(z, density, mask, count);
-    return;
+    if (this->Overlap && this->Slab.First + k == this->Run.Sampled[4])
+    {
+      this->Run.Kernel.CenterCarriedError(density); // the overlap shapes, but adds nothing
+    }
   }
-  run.Backlog.BeforePush();
-  run.Backlog.AfterPush(run.Relaxation.Push(z, density, mask));
-  if (z == run.Sampled[5])
+
+  bool Idle() override { return this->Run.Relaxing && this->Run.Backlog.EmitOne(); }
+
+  bool Consume(const vtkErrorDiffusionLayerRunner::Layer& l) override
   {
-    run.Backlog.AfterPush(run.Relaxation.Flush());
-    run.Backlog.EmitAll();
+    this->Run.Receive(this->Slab.First + l.Index, l.Density, l.Mask, l.Count);
+    this->Run.ProgressDone += 1.0;
+    if (l.Index % this->ProgressStride == 0)
+    {
+      this->Filter->UpdateProgress(this->Run.ProgressDone / this->Run.ProgressTotal);
+    }
+    return !this->Filter->IsAborted();
   }
-}
+
+private:
+  vtkErrorDiffusionSampler* Filter;
+  vtkInternals& Run;
+  const Step& Slab;
+  vtkDataArray* Array;
+  vtkIdType LayerSize;
+  bool Overlap;
+  int ProgressStride;
+  int Extent[6];
+  const unsigned char* Ghosts = nullptr;
+};
 
 //------------------------------------------------------------------------------
 // One sampling step of a scanning method: the layers of one slab through the
@@ -737,54 +816,13 @@ bool vtkErrorDiffusionSampler::ScanSlab(vtkImageData* input, vtkDataArray* array
 {
   vtkInternals& run = *this->Internals;
   const vtkInternals::Step& step = run.Steps[run.Current];
-  int extent[6];
-  input->GetExtent(extent);
-  const vtkIdType layer = run.LayerSize();
-  vtkUnsignedCharArray* ghostArray = input->GetPointGhostArray();
-  const unsigned char* ghosts = ghostArray ? ghostArray->GetPointer(0) : nullptr;
   const int layers = step.Last - step.First + 1;
-  const bool overlap = run.ScanFirst < run.Sampled[4];
   vtkErrorDiffusionLayerRunner runner;
   runner.SetThreaded(this->UseWorkerThread && layers > 1 &&
-    layer * layers >= MinimumVoxelsForWorkerThread &&
+    run.LayerSize() * layers >= MinimumVoxelsForWorkerThread &&
     vtkBlueNoiseThreads::Available() > 1);
-  runner.SetFill([&](int k, float* density) {
-    const int z = step.First + k;
-    const vtkIdType begin = (z - extent[4]) * layer;
-    const double sum = run.Density.Fill(array, begin, begin + layer, ghosts, density);
-    if (z >= run.Sampled[4] && z <= run.Sampled[5])
-    {
-      run.LayerSums[z - run.Sampled[4]] = sum;
-    }
-  });
-  runner.SetBeforeScan([&](int k, const float* density) {
-    if (overlap && step.First + k == run.Sampled[4])
-    {
-      run.Kernel.CenterCarriedError(density); // the overlap shapes, but adds nothing
-    }
-  });
-  if (run.Mask && this->Method != METHOD_RELAXED_ERROR_DIFFUSION)
-  {
-    runner.SetMaskStorage([&](int k) -> unsigned char* {
-      const int z = step.First + k;
-      return z < run.Sampled[4] ? nullptr : run.Mask->GetPointer((z - run.Sampled[4]) * layer);
-    });
-  }
-  if (this->Method == METHOD_RELAXED_ERROR_DIFFUSION)
-  {
-    runner.SetIdle([&run]() { return run.Backlog.EmitOne(); });
-  }
-  const int progressStride = std::max(1, layers / 100);
-  runner.SetConsume([&](const vtkErrorDiffusionLayerRunner::Layer& l) {
-    this->Receive(step.First + l.Index, l.Density, l.Mask, l.Count);
-    run.ProgressDone += 1.0;
-    if (l.Index % progressStride == 0)
-    {
-      this->UpdateProgress(run.ProgressDone / run.ProgressTotal);
-    }
-    return !this->IsAborted();
-  });
-  if (!runner.Run(run.Kernel, run.NX(), run.NY(), layers, step.Last < run.Sampled[5]))
+  vtkInternals::SlabScan stages(this, input, array);
+  if (!runner.Run(run.Kernel, stages, run.NX(), run.NY(), layers, step.Last < run.Sampled[5]))
   {
     run.Backlog.Clear();
     if (!runner.GetError().empty())
@@ -872,7 +910,7 @@ bool vtkErrorDiffusionSampler::SampleWhole(vtkImageData* input, vtkDataArray* ar
   for (vtkIdType k = 0; k < run.SampledLayers(); ++k)
   {
     const unsigned char* bits = mask.data() + k * layer;
-    this->Emit(run.Sampled[4] + static_cast<int>(k), density.data() + k * layer, bits,
+    run.Emit(run.Sampled[4] + static_cast<int>(k), density.data() + k * layer, bits,
       std::count(bits, bits + layer, 1));
   }
   run.ProgressDone = run.ProgressTotal;
@@ -991,7 +1029,7 @@ void vtkErrorDiffusionSampler::WarnIfEmpty(vtkIdType points, double expected)
 
 //------------------------------------------------------------------------------
 // The steps the input at hand covers (all of them, for an input held whole).
-bool vtkErrorDiffusionSampler::Advance(vtkImageData* input, vtkInformationVector** inputVector)
+bool vtkErrorDiffusionSampler::RunCoveredSteps(vtkImageData* input, vtkInformationVector** inputVector)
 {
   vtkInternals& run = *this->Internals;
   int have[6];
@@ -1098,7 +1136,7 @@ int vtkErrorDiffusionSampler::Execute(
     }
     run.Running = true;
   }
-  if (!this->Advance(input.Get(), inputVector))
+  if (!this->RunCoveredSteps(input.Get(), inputVector))
   {
     return fail();
   }

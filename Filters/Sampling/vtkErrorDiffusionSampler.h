@@ -423,15 +423,13 @@ private:
   bool ValidateProperties();
   void PlanRun(const int whole[6], int piece, int pieces);
   bool StartRun(vtkInformation* outInfo, vtkInformationVector** inputVector);
-  bool Advance(vtkImageData* input, vtkInformationVector** inputVector);
+  bool RunCoveredSteps(vtkImageData* input, vtkInformationVector** inputVector);
   bool CollectStatistics(vtkImageData* input, vtkInformationVector** inputVector);
   bool FinishStatistics();
   bool SampleSlab(vtkImageData* input, vtkInformationVector** inputVector);
   bool StartAssembly(vtkImageData* input);
   bool ScanSlab(vtkImageData* input, vtkDataArray* array);
   bool SampleWhole(vtkImageData* input, vtkDataArray* array);
-  void Receive(int z, const float* density, const unsigned char* mask, vtkIdType count);
-  void Emit(int z, const float* density, const unsigned char* mask, vtkIdType count);
   void FinishOutput(vtkImageData* input, vtkPolyData* output, vtkImageData* mask);
   void WarnIfEmpty(vtkIdType points, double expected);
   vtkDataArray* GetDensityArray(vtkImageData* input, vtkInformationVector** inputVector);

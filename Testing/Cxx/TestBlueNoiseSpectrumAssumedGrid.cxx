@@ -48,7 +48,7 @@ std::string GridText(vtkBlueNoiseSpectrum* spectrum)
   return text && text->GetNumberOfValues() == 1 ? text->GetValue(0) : std::string("(none)");
 }
 
-bool Has(const std::string& text, const std::string& part)
+bool Contains(const std::string& text, const std::string& part)
 {
   return text.find(part) != std::string::npos;
 }
@@ -72,11 +72,11 @@ int main()
       "plain points: a spectrum, no error ('" + messages->Errors + "')");
     Check(messages->WarningCount == 1, "plain points: one warning, got " +
         Str(messages->WarningCount) + ": '" + w + "'");
-    Check(Has(w, "no sampling grid") && Has(w, "origin (") && Has(w, "spacing (") &&
-        Has(w, "extent [0, 15, 0, 15, 0, 15]"),
+    Check(Contains(w, "no sampling grid") && Contains(w, "origin (") && Contains(w, "spacing (") &&
+        Contains(w, "extent [0, 15, 0, 15, 0, 15]"),
       "the warning names the grid assumed: '" + w + "'");
     const std::string text = GridText(spectrum);
-    Check(Has(text, "points' bounds") && Has(text, "extent [0, 15, 0, 15, 0, 15]"),
+    Check(Contains(text, "points' bounds") && Contains(text, "extent [0, 15, 0, 15, 0, 15]"),
       "SpectrumGrid names the assumed grid: '" + text + "'");
 
     // Once per execution: a second execution warns once more.
@@ -90,7 +90,7 @@ int main()
     messages->Clear();
     spectrum->UseInputGridOff();
     spectrum->Update();
-    Check(messages->WarningCount == 0 && Has(GridText(spectrum), "points' bounds"),
+    Check(messages->WarningCount == 0 && Contains(GridText(spectrum), "points' bounds"),
       "UseInputGrid off: no warning, got '" + messages->Warnings + "'");
   }
 
@@ -109,7 +109,7 @@ int main()
     Check(messages->WarningCount == 0 && messages->ErrorCount == 0,
       "sampler output: no warning, got '" + messages->Warnings + messages->Errors + "'");
     const std::string text = GridText(spectrum);
-    Check(Has(text, "SamplingGrid") && Has(text, "extent [0, 15, 0, 15, 0, 15]"),
+    Check(Contains(text, "SamplingGrid") && Contains(text, "extent [0, 15, 0, 15, 0, 15]"),
       "SpectrumGrid names the sampler's grid: '" + text + "'");
 
     // 3. The sampler's mask (an image): its own grid, no warning.
@@ -117,7 +117,7 @@ int main()
     sampler->GenerateMaskOn();
     spectrum->SetInputConnection(sampler->GetOutputPort(1));
     spectrum->Update();
-    Check(messages->WarningCount == 0 && Has(GridText(spectrum), "image"),
+    Check(messages->WarningCount == 0 && Contains(GridText(spectrum), "image"),
       "an image: no warning, got '" + messages->Warnings + "', SpectrumGrid '" +
         GridText(spectrum) + "'");
   }

@@ -15,6 +15,7 @@
 #include <atomic>
 #include <cstdint>
 #include <thread>
+#include <utility>
 #include <vector>
 
 using namespace bluenoise_test;
@@ -22,6 +23,27 @@ using namespace bluenoise_test;
 namespace
 {
 using Layer = vtkBlueNoiseRelaxation::Layer;
+
+// A sink that calls `f` with each layer.
+template <typename F>
+class FunctionSink : public vtkErrorDiffusionLayerBacklog::Sink
+{
+public:
+  explicit FunctionSink(F f)
+    : Function(std::move(f))
+  {
+  }
+  void Emit(const Layer& layer) override { this->Function(layer); }
+
+private:
+  F Function;
+};
+
+template <typename F>
+FunctionSink<F> MakeSink(F f)
+{
+  return FunctionSink<F>(std::move(f));
+}
 const int N = 40, NZ = 64;
 const size_t LayerSize = static_cast<size_t>(N) * N;
 
@@ -68,7 +90,8 @@ std::vector<Emitted> Run(bool backlog, bool helper)
   vtkBlueNoiseRelaxation relaxation;
   relaxation.Begin(N, N, 0, 11);
   vtkErrorDiffusionLayerBacklog queue;
-  queue.SetEmit([&out](const Layer& layer) { out.push_back(Copy(layer)); });
+  auto sink = MakeSink([&out](const Layer& layer) { out.push_back(Copy(layer)); });
+  queue.SetSink(&sink);
   std::atomic<bool> done{ false };
   std::thread other;
   if (helper)
@@ -131,7 +154,8 @@ void CheckOrder()
 {
   std::vector<int> order;
   vtkErrorDiffusionLayerBacklog queue;
-  queue.SetEmit([&order](const Layer& layer) { order.push_back(layer.Z); });
+  auto sink = MakeSink([&order](const Layer& layer) { order.push_back(layer.Z); });
+  queue.SetSink(&sink);
   const auto layer = [](int z, bool borrowed) {
     Layer l;
     l.Z = z;

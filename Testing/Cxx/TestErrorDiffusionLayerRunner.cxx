@@ -93,8 +93,92 @@ struct Outcome
   bool IdleOnScanThread = true;
 };
 
+// The stages of RunWith: they record what the runner asked of them.
 // mode 0: one thread; 1: two threads; 2: two, the consumer slow; 3: two, the
 // scan slow.
+class Recorder : public vtkErrorDiffusionLayerRunner::Stages
+{
+public:
+  Recorder(Outcome& o, int mode, int stopAt, int throwInFill, int throwInConsume, bool external)
+    : O(o)
+    , Mode(mode)
+    , StopAt(stopAt)
+    , ThrowInFill(throwInFill)
+    , ThrowInConsume(throwInConsume)
+    , External(external)
+  {
+  }
+
+  void Fill(int z, float* out) override
+  {
+    O.FillsInOrder = O.FillsInOrder && this->Filling.fetch_add(1) == 0 && z == this->NextFill++;
+    (std::this_thread::get_id() == this->Caller ? O.FilledByCaller : O.FilledElsewhere)++;
+    if (z == this->ThrowInFill)
+    {
+      this->Filling.fetch_sub(1);
+      throw std::runtime_error("fill failed");
+    }
+    FillLayer(z, out);
+    this->Filling.fetch_sub(1);
+  }
+
+  unsigned char* MaskStorage(int z) override
+  {
+    return this->External ? O.Mask.data() + z * LayerSize : nullptr;
+  }
+
+  void BeforeScan(int, const float*) override
+  {
+    if (this->Mode == 3)
+    {
+      std::this_thread::sleep_for(std::chrono::milliseconds(2));
+    }
+  }
+
+  bool Consume(const vtkErrorDiffusionLayerRunner::Layer& layer) override
+  {
+    if (layer.Index == this->ThrowInConsume)
+    {
+      throw std::runtime_error("consume failed");
+    }
+    if (this->Mode == 2)
+    {
+      std::this_thread::sleep_for(std::chrono::milliseconds(2));
+    }
+    O.Order.push_back(layer.Index);
+    vtkIdType ones = 0;
+    for (size_t i = 0; i < LayerSize; ++i)
+    {
+      ones += layer.Mask[i];
+      O.DensitiesRight = O.DensitiesRight &&
+        layer.Density[i] == Density(static_cast<int>(i % NX), static_cast<int>(i / NX), layer.Index);
+    }
+    O.Counted += ones;
+    O.DensitiesRight = O.DensitiesRight && ones == layer.Count;
+    if (!this->External)
+    {
+      std::copy(layer.Mask, layer.Mask + LayerSize, O.Mask.data() + layer.Index * LayerSize);
+    }
+    return layer.Index != this->StopAt;
+  }
+
+  void Finish(vtkIdType total) override { O.Finished = total; }
+
+  bool Idle() override
+  {
+    O.IdleOnScanThread = O.IdleOnScanThread && std::this_thread::get_id() != this->Caller;
+    return ++O.IdleCalls % 2 == 1; // work, then none: called again, then no more
+  }
+
+private:
+  Outcome& O;
+  const int Mode, StopAt, ThrowInFill, ThrowInConsume;
+  const bool External;
+  const std::thread::id Caller = std::this_thread::get_id();
+  std::atomic<int> Filling{ 0 };
+  int NextFill = 0;
+};
+
 Outcome RunWith(int mode, int stopAt = -1, int throwInFill = -1, int throwInConsume = -1,
   bool external = false)
 {
@@ -103,62 +187,32 @@ Outcome RunWith(int mode, int stopAt = -1, int throwInFill = -1, int throwInCons
   auto kernel = MakeKernel();
   vtkErrorDiffusionLayerRunner runner;
   runner.SetThreaded(mode > 0);
-  const auto caller = std::this_thread::get_id();
-  std::atomic<int> filling{ 0 };
-  int nextFill = 0;
-  runner.SetFill([&](int z, float* out) {
-    o.FillsInOrder = o.FillsInOrder && filling.fetch_add(1) == 0 && z == nextFill++;
-    (std::this_thread::get_id() == caller ? o.FilledByCaller : o.FilledElsewhere)++;
-    if (z == throwInFill)
-    {
-      filling.fetch_sub(1);
-      throw std::runtime_error("fill failed");
-    }
-    FillLayer(z, out);
-    filling.fetch_sub(1);
-  });
-  if (mode == 3)
-  {
-    runner.SetBeforeScan([](int, const float*) { std::this_thread::sleep_for(std::chrono::milliseconds(2)); });
-  }
-  if (external)
-  {
-    runner.SetMaskStorage([&](int z) { return o.Mask.data() + z * LayerSize; });
-  }
-  runner.SetConsume([&](const vtkErrorDiffusionLayerRunner::Layer& layer) {
-    if (layer.Index == throwInConsume)
-    {
-      throw std::runtime_error("consume failed");
-    }
-    if (mode == 2)
-    {
-      std::this_thread::sleep_for(std::chrono::milliseconds(2));
-    }
-    o.Order.push_back(layer.Index);
-    vtkIdType ones = 0;
-    for (size_t i = 0; i < LayerSize; ++i)
-    {
-      ones += layer.Mask[i];
-      o.DensitiesRight = o.DensitiesRight &&
-        layer.Density[i] == Density(static_cast<int>(i % NX), static_cast<int>(i / NX), layer.Index);
-    }
-    o.Counted += ones;
-    o.DensitiesRight = o.DensitiesRight && ones == layer.Count;
-    if (!external)
-    {
-      std::copy(layer.Mask, layer.Mask + LayerSize, o.Mask.data() + layer.Index * LayerSize);
-    }
-    return layer.Index != stopAt;
-  });
-  runner.SetFinish([&](vtkIdType total) { o.Finished = total; });
-  runner.SetIdle([&]() {
-    o.IdleOnScanThread = o.IdleOnScanThread && std::this_thread::get_id() != caller;
-    return ++o.IdleCalls % 2 == 1; // work, then none: called again, then no more
-  });
-  o.Done = runner.Run(kernel, NX, NY, NZ);
+  Recorder stages(o, mode, stopAt, throwInFill, throwInConsume, external);
+  o.Done = runner.Run(kernel, stages, NX, NY, NZ);
   o.Error = runner.GetError();
   return o;
 }
+
+// The least a run needs: densities and a consumer that counts the layers.
+class Counter : public vtkErrorDiffusionLayerRunner::Stages
+{
+public:
+  Counter(std::atomic<long>& consumed, int n)
+    : Consumed(consumed)
+    , N(n)
+  {
+  }
+  void Fill(int, float* out) override { std::fill(out, out + this->N * this->N, 0.3f); }
+  bool Consume(const vtkErrorDiffusionLayerRunner::Layer&) override
+  {
+    this->Consumed.fetch_add(1);
+    return true;
+  }
+
+private:
+  std::atomic<long>& Consumed;
+  int N;
+};
 
 // Short threaded runs hand a layer over every few microseconds, and the end of
 // each run is a hand-over nothing follows: a wake-up lost there hangs the run
@@ -194,12 +248,8 @@ void CheckShortRuns(int runs)
     kernel.Begin(n, n);
     vtkErrorDiffusionLayerRunner runner;
     runner.SetThreaded(true);
-    runner.SetFill([&](int, float* out) { std::fill(out, out + n * n, 0.3f); });
-    runner.SetConsume([&](const vtkErrorDiffusionLayerRunner::Layer&) {
-      consumed.fetch_add(1);
-      return true;
-    });
-    completed += runner.Run(kernel, n, n, layers) ? 1 : 0;
+    Counter stages(consumed, n);
+    completed += runner.Run(kernel, stages, n, n, layers) ? 1 : 0;
   }
   {
     std::lock_guard<std::mutex> lock(mutex);
@@ -269,12 +319,6 @@ int main()
       Check(!o.Done && o.Error == "consume failed" && o.Order.size() == 4,
         "an exception in Consume ends the run and is reported ('" + o.Error + "')" + mode);
     }
-  }
-  {
-    vtkErrorDiffusionLayerRunner runner;
-    auto kernel = MakeKernel();
-    Check(!runner.Run(kernel, NX, NY, NZ) && !runner.GetError().empty(),
-      "a runner without Fill and Consume says so");
   }
   CheckShortRuns(20000);
   return Summary("TestErrorDiffusionLayerRunner");
