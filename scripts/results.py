@@ -5,6 +5,7 @@
 
     /usr/bin/python3 scripts/results.py [BUILD_DIR] [--quick] [--only SECTIONS]
                                         [--quality] [--test-log FILE]
+                                        [--fuzz-log TARGET=FILE ...]
 
 BUILD_DIR (default _build/paraview, the first stage of scripts/test.sh) must
 hold the benchmark programs (Google Benchmark, -DBLUENOISE_BUILD_BENCHMARKS=ON).
@@ -26,6 +27,9 @@ machine it was made and the exact command that made it:
              report first (about 20 minutes on 2 cores)
   stages     the stage times of a saved log of `bash scripts/test.sh`
              (--test-log FILE); without a log the section is kept as it was
+  fuzz       long libFuzzer runs by hand (--fuzz-log TARGET=FILE[@COMMIT], one per
+             target, each the output of a run with -print_final_stats=1):
+             executions, speed and findings; targets not given keep their row
 
 The full run measures every case of the programs, 3 repetitions each (the
 512^3 cases take most of its time); --quick runs the smallest cases once (a
@@ -49,7 +53,7 @@ import tempfile
 import time
 
 ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
-SECTIONS = ['sampler', 'pvpython', 'peers', 'spectrum', 'streaming', 'mpi', 'quality', 'stages']
+SECTIONS = ['sampler', 'pvpython', 'peers', 'spectrum', 'streaming', 'mpi', 'quality', 'stages', 'fuzz']
 TITLES = {
     'sampler': 'Sampler speed (BenchmarkErrorDiffusionSampler)',
     'pvpython': 'The plugin through pvpython (UpdatePipeline)',
@@ -59,6 +63,7 @@ TITLES = {
     'mpi': 'Distributed (mpi_scaling.py)',
     'quality': 'Blue noise (Testing/QualityReport.md)',
     'stages': 'Test suite stage times (scripts/test.sh)',
+    'fuzz': 'Long fuzzer runs (Testing/Fuzz)',
 }
 MARK = '<!-- section: %s -->'
 # Open MPI refuses root and more processes than cores unless told (as the tests do).
@@ -83,7 +88,7 @@ def command_line(argv):
     return ' '.join(shlex.quote(a) for a in argv)
 
 
-def machine():
+def machine(load=True):
     cpu = 'unknown CPU'
     with open('/proc/cpuinfo') as f:
         for line in f:
@@ -96,10 +101,12 @@ def machine():
             if line.startswith('MemTotal:'):
                 mem = int(line.split()[1]) / 1024.0 ** 2
                 break
-    load = os.getloadavg()[0]
+    what = '%d cores, %.1f GiB, %s' % (os.cpu_count() or 1, mem, cpu)
+    if not load:
+        return what
     nice = os.nice(0)
-    return '%d cores, %.1f GiB, %s; load average %.2f at the start%s' % (
-        os.cpu_count() or 1, mem, cpu, load, ', niceness %d' % nice if nice else '')
+    return '%s; load average %.2f at the start%s' % (
+        what, os.getloadavg()[0], ', niceness %d' % nice if nice else '')
 
 
 def now():
@@ -610,9 +617,73 @@ def section_stages(opts, scratch):
     return out
 
 
+FUZZ_HEADER = ['target', 'executions', 'findings', 'how it ended', 'executions/s', 'seed', 'when',
+               'source']
+
+
+def fuzz_row(target, path, commit):
+    """One row of the fuzz table from a libFuzzer log (-print_final_stats=1)."""
+    with open(path, errors='replace') as f:
+        text = f.read()
+    stats = dict(re.findall(r'^stat::(\w+):\s+(\d+)', text, re.M))
+    if 'number_of_executed_units' not in stats:
+        raise SystemExit('results: no final stats in %s (run with -print_final_stats=1)' % path)
+    findings = len(re.findall(r'^==\d+==ERROR|^SUMMARY: |deadly signal|^ALARM: ', text, re.M))
+    seed = re.search(r'^INFO: Seed: (\d+)', text, re.M)
+    stamp = datetime.datetime.fromtimestamp(os.path.getmtime(path), datetime.timezone.utc)
+    if findings:
+        ended = 'a finding'
+    elif re.search(r'^Done \d+ runs', text, re.M):
+        ended = 'all runs done'
+    elif 'run interrupted' in text:
+        ended = 'stopped by hand'
+    else:
+        ended = '?'
+    return [target, stats['number_of_executed_units'], str(findings), ended,
+            stats.get('average_exec_per_sec', '?'),
+            seed.group(1) if seed else '?', stamp.strftime('%Y-%m-%d %H:%M UTC'), commit or git_commit() or '?']
+
+
+def git_commit():
+    try:
+        return subprocess.run(['git', '-C', ROOT, 'rev-parse', '--short', 'HEAD'], capture_output=True,
+                              text=True, check=True).stdout.strip()
+    except (OSError, subprocess.CalledProcessError):
+        return None
+
+
+def section_fuzz(opts, scratch):
+    if not opts.fuzz_log:
+        raise Skip('no --fuzz-log')
+    rows = {}
+    for line in old_sections(opts.output).get('fuzz') or []:
+        cells = [c.strip() for c in line.strip().strip('|').split('|')]
+        if len(cells) == len(FUZZ_HEADER) and cells[0].startswith('Fuzz'):
+            rows[cells[0]] = cells
+    for item in opts.fuzz_log:
+        target, _, path = item.partition('=')
+        path, _, commit = path.partition('@')
+        if not target or not path:
+            raise SystemExit('results: --fuzz-log wants TARGET=FILE[@COMMIT], not %s' % item)
+        rows[target] = fuzz_row(target, path, commit)
+    out = provenance(now(), machine(load=False), [
+        'bash scripts/sanitize.sh asan   (the fuzzers, ASan + UBSan, in _build/asan)',
+        'cd _build/asan && bin/TARGET -seed=SEED -runs=1000000 -timeout=30 -rss_limit_mb=2048 '
+        '-print_final_stats=1 WORK ../../Testing/Fuzz/corpus/TARGET > LOG 2>&1',
+        command_line(['/usr/bin/python3', 'scripts/results.py', '--only', 'fuzz', '--fuzz-log', 'TARGET=LOG'])])
+    out += ['Runs by hand, far longer than the minute per target of the test suite: each from',
+            'its committed seed corpus into an empty WORK folder, on one core, under ASan and',
+            'UBSan (a finding stops the run). Findings: sanitizer reports, crashes, timeouts',
+            'and out-of-memory stops in the log. Source: the commit the fuzzers were built',
+            'from (TARGET=LOG@COMMIT), else the one the page was made at.', '']
+    out += table(FUZZ_HEADER, [rows[k] for k in sorted(rows)],
+                 ['---', '---:', '---:', '---', '---:', '---:', '---', '---'])
+    return out
+
+
 BUILDERS = {'sampler': section_sampler, 'pvpython': section_pvpython, 'peers': section_peers,
             'spectrum': section_spectrum, 'streaming': section_streaming, 'mpi': section_mpi,
-            'quality': section_quality, 'stages': section_stages}
+            'quality': section_quality, 'stages': section_stages, 'fuzz': section_fuzz}
 
 
 # --- the page ----------------------------------------------------------------
@@ -661,7 +732,8 @@ def page(sections, argv):
         body = sections.get(s)
         if body is None:
             body = ['## ' + TITLES[s], '', 'Not measured yet: `/usr/bin/python3 scripts/results.py'
-                    ' --only %s%s`.' % (s, ' --test-log LOG' if s == 'stages' else ''), '']
+                    ' --only %s%s`.' % (s, {'stages': ' --test-log LOG',
+                                          'fuzz': ' --fuzz-log TARGET=LOG'}.get(s, '')), '']
         lines += body
     while lines and not lines[-1]:
         lines.pop()
@@ -685,6 +757,8 @@ def main():
     parser.add_argument('--quality', action='store_true',
                         help='remake Testing/QualityReport.md first (scripts/quality-report.sh, ~20 min)')
     parser.add_argument('--test-log', help='a saved log of `bash scripts/test.sh` for the stages section')
+    parser.add_argument('--fuzz-log', action='append', metavar='TARGET=FILE[@COMMIT]',
+                        help='a libFuzzer log of TARGET (built from COMMIT) for the fuzz section (repeatable)')
     parser.add_argument('--streaming-edges', default='1024',
                         help='the volume edges of the streaming section (default 1024; 2048 takes 8 GiB of disk)')
     parser.add_argument('--pvpython', help='the pvpython to use (default: from PATH)')
