@@ -5,6 +5,7 @@
 #include "vtkErrorDiffusionChargeCurve.h"
 
 #include <algorithm>
+#include <utility>
 
 //------------------------------------------------------------------------------
 vtkErrorDiffusionKernel::vtkErrorDiffusionKernel() = default;
@@ -15,10 +16,10 @@ vtkErrorDiffusionKernel::~vtkErrorDiffusionKernel() = default;
 //------------------------------------------------------------------------------
 void vtkErrorDiffusionKernel::PrepareCharges()
 {
-  this->Charges = vtkErrorDiffusionChargeCurve::Get(this->GetParameters(), this->GetModulationScale());
+  auto curve = vtkErrorDiffusionChargeCurve::Get(this->GetParameters(), this->GetModulationScale());
   auto& recent = this->Recent;
-  recent.erase(std::remove(recent.begin(), recent.end(), this->Charges), recent.end());
-  recent.insert(recent.begin(), this->Charges);
+  recent.erase(std::remove(recent.begin(), recent.end(), curve), recent.end());
+  recent.insert(recent.begin(), std::move(curve));
   if (recent.size() > RecentCurves)
   {
     recent.pop_back();
@@ -28,5 +29,5 @@ void vtkErrorDiffusionKernel::PrepareCharges()
 //------------------------------------------------------------------------------
 float vtkErrorDiffusionKernel::ChargeAt(float minority) const
 {
-  return this->Charges ? this->Charges->At(minority) : 0.0f;
+  return this->Recent.empty() ? 0.0f : this->Recent.front()->At(minority);
 }

@@ -50,8 +50,8 @@ protected:
   float ChargeAt(float minority) const override;
 
 private:
-  std::shared_ptr<vtkErrorDiffusionChargeCurve> Charges;
-  std::vector<std::shared_ptr<vtkErrorDiffusionChargeCurve>> Recent; // most recent first
+  // The curves used last, the current one first.
+  std::vector<std::shared_ptr<vtkErrorDiffusionChargeCurve>> Recent;
 };
 
 #endif
