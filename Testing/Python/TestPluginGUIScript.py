@@ -148,12 +148,14 @@ try:
     for points in (0, 7000, 0, 9000):
         sampler.NumberOfPoints = points
         spectrum.UpdatePipeline()
-        # The GUI processes events when a filter reports progress (ParaView 6.1 did
-        # draw a view then, now and again, and that view held the outputs as they
-        # stood and counted as up to date): the check is what a view shows when it
-        # is drawn after the update, so the views are marked out of date first.
-        for v in (chart, second):
-            v.SMProxy.MarkDirty(None)
+        # ParaView 6.1 may draw the views while a script's UpdatePipeline runs
+        # (the GUI processes events when the sampler reports progress): the
+        # sampler's nested request gets its output as it stands, the spectrum
+        # runs on that, and the charts keep the table it made, taken for up to
+        # date. The check is what a chart shows when drawn after the update, so
+        # ParaView is told first that the spectrum's output changed (its
+        # representations and their views are marked out of date).
+        spectrum.SMProxy.MarkDirty(spectrum.SMProxy)
         Render(chart)
         Render(second)
         runs.append({"points": points, "produced": produced(), "chart": shown(chart),
