@@ -27,9 +27,10 @@ machine it was made and the exact command that made it:
              report first (about 20 minutes on 2 cores)
   stages     the stage times of a saved log of `bash scripts/test.sh`
              (--test-log FILE); without a log the section is kept as it was
-  fuzz       long libFuzzer runs by hand (--fuzz-log TARGET=FILE[@COMMIT], one per
-             target, each the output of a run with -print_final_stats=1):
-             executions, speed and findings; targets not given keep their row
+  fuzz       long libFuzzer runs by hand (--fuzz-log TARGET=FILE[@COMMIT], each the
+             output of a run with -print_final_stats=1; several for one target:
+             runs continued in one WORK folder, added up): executions, speed and
+             findings; targets not given keep their row
 
 The full run measures every case of the programs, 3 repetitions each (the
 512^3 cases take most of its time); --quick runs the smallest cases once (a
@@ -644,6 +645,18 @@ def fuzz_row(target, path, commit):
             seed.group(1) if seed else '?', stamp.strftime('%Y-%m-%d %H:%M UTC'), commit or git_commit() or '?']
 
 
+def combined_fuzz_row(logs):
+    """One row for the logs of one target, in the order given: a run that went on
+    in the WORK folder of the one before it adds its executions to them."""
+    if len(logs) == 1:
+        return logs[0]
+    executions = sum(int(r[1]) for r in logs)
+    seconds = sum(int(r[1]) / max(int(r[4]), 1) for r in logs if r[4].isdigit())
+    return [logs[0][0], str(executions), str(sum(int(r[2]) for r in logs)),
+            ', then '.join(r[3] for r in logs), str(round(executions / seconds)) if seconds else '?',
+            ', '.join(r[5] for r in logs), logs[-1][6], ', '.join(sorted(set(r[7] for r in logs)))]
+
+
 def git_commit():
     try:
         return subprocess.run(['git', '-C', ROOT, 'rev-parse', '--short', 'HEAD'], capture_output=True,
@@ -660,12 +673,15 @@ def section_fuzz(opts, scratch):
         cells = [c.strip() for c in line.strip().strip('|').split('|')]
         if len(cells) == len(FUZZ_HEADER) and cells[0].startswith('Fuzz'):
             rows[cells[0]] = cells
+    runs = {}
     for item in opts.fuzz_log:
         target, _, path = item.partition('=')
         path, _, commit = path.partition('@')
         if not target or not path:
             raise SystemExit('results: --fuzz-log wants TARGET=FILE[@COMMIT], not %s' % item)
-        rows[target] = fuzz_row(target, path, commit)
+        runs.setdefault(target, []).append(fuzz_row(target, path, commit))
+    for target, logs in runs.items():
+        rows[target] = combined_fuzz_row(logs)
     out = provenance(now(), machine(load=False), [
         'bash scripts/sanitize.sh asan   (the fuzzers, ASan + UBSan, in _build/asan)',
         'cd _build/asan && bin/TARGET -seed=SEED -runs=1000000 -timeout=30 -rss_limit_mb=2048 '
@@ -675,7 +691,9 @@ def section_fuzz(opts, scratch):
             'its committed seed corpus into an empty WORK folder, on one core, under ASan and',
             'UBSan (a finding stops the run). Findings: sanitizer reports, crashes, timeouts',
             'and out-of-memory stops in the log. Source: the commit the fuzzers were built',
-            'from (TARGET=LOG@COMMIT), else the one the page was made at.', '']
+            'from (TARGET=LOG@COMMIT), else the one the page was made at. A target given',
+            'several logs is a run continued in the WORK folder of the one before (a new',
+            'seed, the corpus it grew): their executions add up.', '']
     out += table(FUZZ_HEADER, [rows[k] for k in sorted(rows)],
                  ['---', '---:', '---:', '---', '---:', '---:', '---', '---'])
     return out
