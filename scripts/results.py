@@ -651,10 +651,13 @@ def combined_fuzz_row(logs):
     if len(logs) == 1:
         return logs[0]
     executions = sum(int(r[1]) for r in logs)
-    seconds = sum(int(r[1]) / max(int(r[4]), 1) for r in logs if r[4].isdigit())
+    # The speed over all of them: their seconds summed (unknown if one's is).
+    known = all(r[4].isdigit() and int(r[4]) > 0 for r in logs)
+    seconds = sum(int(r[1]) / int(r[4]) for r in logs) if known else 0
+    sources = list(dict.fromkeys(r[7] for r in logs))  # in the order of the runs
     return [logs[0][0], str(executions), str(sum(int(r[2]) for r in logs)),
             ', then '.join(r[3] for r in logs), str(round(executions / seconds)) if seconds else '?',
-            ', '.join(r[5] for r in logs), logs[-1][6], ', '.join(sorted(set(r[7] for r in logs)))]
+            ', '.join(r[5] for r in logs), logs[-1][6], ', '.join(sources)]
 
 
 def git_commit():
