@@ -646,8 +646,8 @@ def fuzz_row(target, path, commit):
 
 
 def combined_fuzz_row(logs):
-    """One row for the logs of one target, in the order given: a run that went on
-    in the WORK folder of the one before it adds its executions to them."""
+    """One row for the logs of one target, in the order given: the pieces of one
+    run in one WORK folder (one after another or side by side) add up."""
     if len(logs) == 1:
         return logs[0]
     executions = sum(int(r[1]) for r in logs)
@@ -695,8 +695,9 @@ def section_fuzz(opts, scratch):
             'UBSan (a finding stops the run). Findings: sanitizer reports, crashes, timeouts',
             'and out-of-memory stops in the log. Source: the commit the fuzzers were built',
             'from (TARGET=LOG@COMMIT), else the one the page was made at. A target given',
-            'several logs is a run continued in the WORK folder of the one before (a new',
-            'seed, the corpus it grew): their executions add up.', '']
+            'several logs is one run in pieces: each piece a new seed in the same WORK folder,',
+            'after the piece before or beside it, from the corpus grown so far; their',
+            'executions add up.', '']
     out += table(FUZZ_HEADER, [rows[k] for k in sorted(rows)],
                  ['---', '---:', '---:', '---', '---:', '---:', '---', '---'])
     return out
