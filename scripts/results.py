@@ -645,6 +645,17 @@ def fuzz_row(target, path, commit):
             seed.group(1) if seed else '?', stamp.strftime('%Y-%m-%d %H:%M UTC'), commit or git_commit() or '?']
 
 
+def folded_endings(endings):
+    """The pieces' endings in order, a run of equal ones said once with its count."""
+    folded = []
+    for ending in endings:
+        if folded and folded[-1][0] == ending:
+            folded[-1][1] += 1
+        else:
+            folded.append([ending, 1])
+    return [e if n == 1 else '%s (%d pieces)' % (e, n) for e, n in folded]
+
+
 def combined_fuzz_row(logs):
     """One row for the logs of one target, in the order given: the pieces of one
     run in one WORK folder (one after another or side by side) add up."""
@@ -656,7 +667,8 @@ def combined_fuzz_row(logs):
     seconds = sum(int(r[1]) / int(r[4]) for r in logs) if known else 0
     sources = list(dict.fromkeys(r[7] for r in logs))  # in the order of the runs
     return [logs[0][0], str(executions), str(sum(int(r[2]) for r in logs)),
-            ', then '.join(r[3] for r in logs), str(round(executions / seconds)) if seconds else '?',
+            ', then '.join(folded_endings(r[3] for r in logs)),
+            str(round(executions / seconds)) if seconds else '?',
             ', '.join(r[5] for r in logs), logs[-1][6], ', '.join(sources)]
 
 
