@@ -118,7 +118,8 @@ void vtkBlueNoiseRelaxation::FaceOrder(std::uint64_t seed, int x, int y, int z, 
 }
 
 //------------------------------------------------------------------------------
-void vtkBlueNoiseRelaxation::Begin(int nx, int ny, int firstZ, std::uint64_t seed)
+void vtkBlueNoiseRelaxation::Begin(
+  int nx, int ny, int firstZ, std::uint64_t seed, int firstMovable)
 {
   this->NX = std::max(nx, 0);
   this->NY = std::max(ny, 0);
@@ -128,6 +129,7 @@ void vtkBlueNoiseRelaxation::Begin(int nx, int ny, int firstZ, std::uint64_t see
   this->First = firstZ;
   this->Last = firstZ - 1;
   this->Relaxed = firstZ;
+  this->Movable = firstMovable;
   this->Finalized = firstZ;
   this->Seed = seed;
   this->Moves = 0;
@@ -578,7 +580,7 @@ const std::vector<vtkBlueNoiseRelaxation::Layer>& vtkBlueNoiseRelaxation::Push(
   Slot& slot = this->Ring[static_cast<size_t>(z - this->First) & (RingSize - 1)];
   slot.Z = z;
   const size_t layer = static_cast<size_t>(this->NX) * this->NY;
-  slot.Relaxable = AnyRelaxable(density, layer);
+  slot.Relaxable = z >= this->Movable && AnyRelaxable(density, layer);
   std::fill(slot.Bits.begin(), slot.Bits.end(), 0);
   vtkIdType count = 0;
   for (int y = 0; y < this->NY; ++y)

@@ -91,8 +91,15 @@ public:
   /// The order in which the faces (indices into Faces) of sample (x, y, z) are tried.
   static void FaceOrder(std::uint64_t seed, int x, int y, int z, int order[6]);
 
-  /// Start a run over layers of nx * ny voxels, the first one being z.
-  void Begin(int nx, int ny, int firstZ, std::uint64_t seed);
+  /**
+   * Start a run over layers of nx * ny voxels, the first one being z. The
+   * layers below firstMovable (when it is above firstZ) are context: the
+   * searches see their samples, but none moves into or out of them, and Push
+   * returns each as final at once (Borrowed). A part of a volume whose
+   * layers below are sampled apart relaxes its first layers with those below
+   * in view, as a run over the whole volume would.
+   */
+  void Begin(int nx, int ny, int firstZ, std::uint64_t seed, int firstMovable = VTK_INT_MIN);
 
   /**
    * Add the next layer (global index z = the previous one + 1). Returns the
@@ -163,6 +170,7 @@ private:
   int First = 0;     // first layer of the run
   int Last = -1;     // last layer pushed
   int Relaxed = 0;   // layers below this one are relaxed
+  int Movable = 0;   // layers below this one are context
   int Finalized = 0; // layers below this one were returned
   std::uint64_t Seed = 0;
   vtkIdType Moves = 0;

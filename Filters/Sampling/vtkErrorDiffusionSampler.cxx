@@ -204,7 +204,14 @@ public:
   {
     if (z < this->Sampled[4])
     {
-      return; // an overlap layer: it only settles the scan
+      // An overlap layer: it settles the scan, and the last few are what the
+      // relaxation of the piece's first layers sees below them (returned at
+      // once, never emitted).
+      if (this->Relaxing && z >= this->RelaxFirst())
+      {
+        this->Relaxation.Push(z, density, mask);
+      }
+      return;
     }
     if (!this->Relaxing)
     {
@@ -218,6 +225,13 @@ public:
       this->Backlog.AfterPush(this->Relaxation.Flush());
       this->Backlog.EmitAll();
     }
+  }
+
+  // The first layer the relaxation sees: the overlap layers its search
+  // reaches below the first sampled one.
+  int RelaxFirst() const
+  {
+    return std::max(this->ScanFirst, this->Sampled[4] - vtkBlueNoiseRelaxation::MaximumRadius);
   }
 
   int NX() const { return this->Whole[1] - this->Whole[0] + 1; }
@@ -723,7 +737,8 @@ bool vtkErrorDiffusionSampler::StartAssembly(vtkImageData* input)
   }
   if (run.Relaxing)
   {
-    run.Relaxation.Begin(run.NX(), run.NY(), run.Sampled[4], static_cast<std::uint64_t>(this->Seed));
+    run.Relaxation.Begin(run.NX(), run.NY(), run.RelaxFirst(),
+      static_cast<std::uint64_t>(this->Seed), run.Sampled[4]);
     run.Backlog.SetSink(&run);
   }
   run.AssemblerStarted = true;

@@ -58,7 +58,10 @@
  * Pieces and streaming. A request for piece p of n samples the p-th of n
  * z-slabs of the whole extent (full layers, so the scan runs as for the whole
  * volume): it first scans up to OverlapLayers layers above its slab to settle
- * the error pattern it enters with, and its own count is exact. The density
+ * the error pattern it enters with, and its own count is exact. The
+ * relaxation sees the last MaximumRadius of them below the slab (as context:
+ * no sample moves into or out of them, see vtkBlueNoiseRelaxation::Begin),
+ * so the slab's first layers are not drawn into the emptiness below. The density
  * scale and range come from the whole volume (the statistics pass reads it;
  * vtkPErrorDiffusionSampler reduces the pieces' statistics instead). With
  * NumberOfSlabs > 1 the input is requested in that many z-slabs, one after

@@ -5,10 +5,13 @@
 // clamps to MaximumRadius. (The square of that spacing was converted to int,
 // undefined behavior for g below about 1e-14; found by fuzzing.)
 // A layer with one density in (0, 1/4], wherever it lies, is relaxed; one
-// without is returned at once, the caller's (Borrowed).
+// without is returned at once, the caller's (Borrowed). Layers below
+// firstMovable are context only.
 #include "BlueNoiseTestUtilities.h"
 #include "vtkBlueNoiseRelaxation.h"
+#include "vtkErrorDiffusionKernel.h"
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 #include <vector>
@@ -25,6 +28,45 @@ vtkIdType Count(const std::vector<vtkBlueNoiseRelaxation::Layer>& layers)
     count += layer.Count;
   }
   return count;
+}
+
+// The error-diffusion masks of a constant cube of n x n x layers voxels at density g.
+std::vector<std::vector<unsigned char>> Scan(int n, int layers, float g)
+{
+  vtkErrorDiffusionKernel kernel;
+  kernel.SetSeed(3);
+  kernel.Begin(n, n);
+  const std::vector<float> density(static_cast<size_t>(n) * n, g);
+  std::vector<std::vector<unsigned char>> masks(
+    static_cast<size_t>(layers), std::vector<unsigned char>(density.size()));
+  for (int z = 0; z < layers; ++z)
+  {
+    const float* next = z + 1 < layers ? density.data() : nullptr;
+    kernel.ProcessLayer(density.data(), next, masks[static_cast<size_t>(z)].data());
+  }
+  return masks;
+}
+
+// Relaxes masks[first, last] (context below firstMovable), final copies by layer.
+std::vector<std::vector<unsigned char>> Relax(const std::vector<std::vector<unsigned char>>& masks,
+  const std::vector<float>& density, int first, int firstMovable, int last)
+{
+  const int n = static_cast<int>(std::lround(std::sqrt(double(density.size()))));
+  vtkBlueNoiseRelaxation relaxation;
+  relaxation.Begin(n, n, first, 5, firstMovable);
+  std::vector<std::vector<unsigned char>> out(masks.size());
+  const auto keep = [&](const std::vector<vtkBlueNoiseRelaxation::Layer>& done) {
+    for (const auto& layer : done)
+    {
+      out[static_cast<size_t>(layer.Z)].assign(layer.Mask, layer.Mask + density.size());
+    }
+  };
+  for (int z = first; z <= last; ++z)
+  {
+    keep(relaxation.Push(z, density.data(), masks[static_cast<size_t>(z)].data()));
+  }
+  keep(relaxation.Flush());
+  return out;
 }
 }
 
@@ -68,6 +110,45 @@ int main()
       Check(borrowed != relaxable,
         "density " + Str(g) + " at " + Str(at) + (relaxable ? ": relaxed" : ": returned as it came"));
     }
+  }
+
+  // Context below firstMovable (a z-part relaxed apart from the layers below
+  // it): those layers come back at once, as they came; no sample moves into or
+  // out of them; and the first movable layer keeps about its scanned count,
+  // where without the context its neighbors above drift into it.
+  {
+    const int n = 48, layers = 40, first = 12, movable = 20;
+    const float g = 0.03f;
+    const auto masks = Scan(n, layers, g);
+    const std::vector<float> density(static_cast<size_t>(n) * n, g);
+    vtkBlueNoiseRelaxation relaxation;
+    relaxation.Begin(n, n, first, 5, movable);
+    bool asCame = true;
+    for (int z = first; z < movable; ++z)
+    {
+      const auto& done = relaxation.Push(z, density.data(), masks[static_cast<size_t>(z)].data());
+      asCame = asCame && done.size() == 1 && done[0].Z == z && done[0].Borrowed &&
+        done[0].Mask == masks[static_cast<size_t>(z)].data();
+    }
+    Check(asCame, "the context layers come back at once, as they came");
+    const auto count = [&](const std::vector<std::vector<unsigned char>>& m, int from, int to) {
+      vtkIdType c = 0;
+      for (int z = from; z <= to; ++z)
+      {
+        c += std::count(m[static_cast<size_t>(z)].begin(), m[static_cast<size_t>(z)].end(), 1);
+      }
+      return c;
+    };
+    const auto context = Relax(masks, density, first, movable, layers - 1);
+    const auto none = Relax(masks, density, movable, movable, layers - 1);
+    Check(count(context, movable, layers - 1) == count(masks, movable, layers - 1),
+      "with context: the movable layers keep their samples");
+    const double scanned = static_cast<double>(count(masks, movable, movable));
+    const double with = static_cast<double>(count(context, movable, movable));
+    const double without = static_cast<double>(count(none, movable, movable));
+    Check(std::abs(with / scanned - 1.0) <= 0.05 && std::abs(without / scanned - 1.0) > 0.1,
+      "the first movable layer: " + Str(with) + " samples with context, " + Str(without) +
+        " without, " + Str(scanned) + " scanned");
   }
   return Summary("TestBlueNoiseRelaxation");
 }
