@@ -5,6 +5,7 @@
 #include "vtkSMPTools.h"
 
 #include <algorithm>
+#include <atomic>
 #include <cstdlib>
 #include <string>
 #include <thread>
@@ -58,4 +59,30 @@ void vtkBlueNoiseThreads::Split(int parts, const std::function<void(int)>& task)
   {
     worker.join();
   }
+}
+
+//------------------------------------------------------------------------------
+void vtkBlueNoiseThreads::ForEach(int count, const std::function<void(int)>& task)
+{
+  if (count <= 0)
+  {
+    return;
+  }
+  if (!SequentialBackend())
+  {
+    vtkSMPTools::For(0, count, 1, [&task](vtkIdType begin, vtkIdType end) {
+      for (vtkIdType i = begin; i < end; ++i)
+      {
+        task(static_cast<int>(i));
+      }
+    });
+    return;
+  }
+  std::atomic<int> next(0);
+  Split(std::min(count, Available()), [&](int) {
+    for (int i = next++; i < count; i = next++)
+    {
+      task(i);
+    }
+  });
 }

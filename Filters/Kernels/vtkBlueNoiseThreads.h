@@ -11,6 +11,8 @@
  * decided here:
  * - Split(): independent parts of one pass (the budget statistics of the
  *   densities) on up to Available() threads, the caller's included;
+ * - ForEach(): independent tasks (the z-parts of a sampler's scan) spread
+ *   over as many threads;
  * - the scan's worker thread (vtkErrorDiffusionLayerRunner): the scan of the
  *   layers runs beside the thread that reads their densities, when
  *   Available() is more than one. It is a pipeline of two stages, which
@@ -48,6 +50,14 @@ public:
    * must be independent.
    */
   static void Split(int parts, const std::function<void(int)>& task);
+
+  /**
+   * task(i) for i in [0, count), each once, on up to Available() threads: the
+   * Sequential backend's on threads of its own (the caller's included, each
+   * taking the next i when done), any other backend's through vtkSMPTools.
+   * The tasks must be independent; all are done when it returns.
+   */
+  static void ForEach(int count, const std::function<void(int)>& task);
 };
 
 #endif

@@ -223,10 +223,15 @@ bool vtkErrorDiffusionLayerRunner::Run(
   }
   this->LayerMasks.assign(this->Slots, nullptr);
   const bool done = this->Threaded ? this->RunThreaded(kernel) : this->RunSequential(kernel);
-  this->Densities = std::vector<float>();
-  this->Masks = std::vector<unsigned char>();
   this->Work = nullptr;
   return done;
+}
+
+//------------------------------------------------------------------------------
+void vtkErrorDiffusionLayerRunner::ReleaseBuffers()
+{
+  this->Densities = std::vector<float>();
+  this->Masks = std::vector<unsigned char>();
 }
 
 //------------------------------------------------------------------------------

@@ -43,7 +43,8 @@
  *
  * The result does not depend on threading: the kernel sees the same layers in
  * the same order either way. Memory: a ring of 8 layers of densities and
- * masks when threaded, 2 when not.
+ * masks when threaded, 2 when not, kept until ReleaseBuffers() or the
+ * runner's end.
  *
  * Consume runs on the calling thread; Fill on either thread, one call at a
  * time, in layer order; MaskStorage, BeforeScan, Finish and Idle on the scan
@@ -108,6 +109,12 @@ public:
    */
   bool Run(vtkErrorDiffusionKernel& kernel, Stages& stages, int nx, int ny, int nz,
     bool lastHasNext = false);
+
+  /**
+   * Frees the ring of layer buffers, which a runner keeps from one Run to the
+   * next (a run in rounds of a few layers) until this or its destruction.
+   */
+  void ReleaseBuffers();
 
   /// Why the last Run failed; empty when it did not, or when Consume stopped it.
   const std::string& GetError() const { return this->Error; }

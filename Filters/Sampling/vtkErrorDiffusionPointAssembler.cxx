@@ -37,6 +37,14 @@ namespace
 {
 // dst[dstFirst + p] = src[srcFirst + ids[p]] for p in [0, n), value by value
 // (a tuple assignment copies with a memcpy call per tuple).
+// Whether points of a target array can be written by several threads at
+// once, each its own range: plain memory, one value per element (not bits).
+bool WritableSideBySide(vtkAbstractArray* source, vtkAbstractArray* target)
+{
+  return vtkDataArray::SafeDownCast(source) && vtkDataArray::SafeDownCast(target) &&
+    target->HasStandardMemoryLayout() && target->GetDataType() != VTK_BIT;
+}
+
 struct GatherWorker
 {
   template <typename SrcT, typename DstT>
@@ -533,8 +541,8 @@ void vtkErrorDiffusionPointAssembler::Begin(
   }
   const vtkIdType nx = std::max(0, extent[1] - extent[0] + 1);
   const vtkIdType ny = std::max(0, extent[3] - extent[2] + 1);
-  this->LayerIds.resize(static_cast<size_t>(nx * ny) + 1);
-  this->RowEnds.resize(static_cast<size_t>(ny));
+  this->Layer.Ids.resize(static_cast<size_t>(nx * ny) + 1);
+  this->Layer.RowEnds.resize(static_cast<size_t>(ny));
 }
 
 //------------------------------------------------------------------------------
@@ -586,12 +594,12 @@ void vtkErrorDiffusionPointAssembler::Reserve(vtkIdType tuples)
 // voxels (near g = 0.5 a branch per voxel would be mispredicted half of the
 // time); eight voxels without a sample are passed over at once (most of them
 // at low densities). One slot past the samples is written.
-vtkIdType vtkErrorDiffusionPointAssembler::CompactLayer(const unsigned char* mask)
+vtkIdType vtkErrorDiffusionPointAssembler::CompactLayer(
+  const unsigned char* mask, vtkIdType* ids, std::vector<vtkIdType>& rowEnds) const
 {
   const vtkIdType nx = this->Extent[1] - this->Extent[0] + 1;
-  vtkIdType* ids = this->LayerIds.data();
   vtkIdType n = 0;
-  for (size_t j = 0; j < this->RowEnds.size(); ++j)
+  for (size_t j = 0; j < rowEnds.size(); ++j)
   {
     const vtkIdType rowStart = static_cast<vtkIdType>(j) * nx;
     const unsigned char* bits = mask + rowStart;
@@ -615,39 +623,103 @@ vtkIdType vtkErrorDiffusionPointAssembler::CompactLayer(const unsigned char* mas
       ids[n] = rowStart + i;
       n += bits[i];
     }
-    this->RowEnds[j] = n;
+    rowEnds[j] = n;
   }
   return n;
 }
 
 //------------------------------------------------------------------------------
-void vtkErrorDiffusionPointAssembler::WriteCoordinates(int z, vtkIdType first)
+void vtkErrorDiffusionPointAssembler::Compact(int z, const float* density,
+  const unsigned char* mask, std::vector<vtkIdType>& scratch, LayerSamples& samples) const
 {
-  if (auto* d = vtkDoubleArray::SafeDownCast(this->Coordinates))
+  const size_t layer = static_cast<size_t>(this->Extent[1] - this->Extent[0] + 1) *
+    static_cast<size_t>(this->Extent[3] - this->Extent[2] + 1);
+  scratch.resize(layer + 1);
+  samples.Z = z;
+  samples.RowEnds.resize(static_cast<size_t>(this->Extent[3] - this->Extent[2] + 1));
+  const vtkIdType n = this->CompactLayer(mask, scratch.data(), samples.RowEnds);
+  samples.Ids.assign(scratch.begin(), scratch.begin() + n);
+  samples.LayerDensity = nullptr;
+  samples.Densities.resize(static_cast<size_t>(n));
+  for (vtkIdType p = 0; p < n; ++p)
   {
-    WriteCenters(d->GetPointer(3 * first), this->IndexToPhysical, this->Extent, z, this->LayerIds,
-      this->RowEnds, this->Jitter, this->JitterSeed);
-  }
-  else
-  {
-    WriteCenters(vtkFloatArray::SafeDownCast(this->Coordinates)->GetPointer(3 * first),
-      this->IndexToPhysical, this->Extent, z, this->LayerIds, this->RowEnds, this->Jitter,
-      this->JitterSeed);
+    samples.Densities[p] = density[samples.Ids[p]];
   }
 }
 
 //------------------------------------------------------------------------------
-void vtkErrorDiffusionPointAssembler::CopyAttributes(int z, vtkIdType first, vtkIdType n)
+vtkIdType vtkErrorDiffusionPointAssembler::LayerSamples::DropLast(vtkIdType n)
 {
+  const vtkIdType count = this->Count();
+  n = std::min(std::max<vtkIdType>(n, 0), count);
+  const vtkIdType keep = count - n;
+  this->Ids.resize(static_cast<size_t>(keep));
+  this->Densities.resize(static_cast<size_t>(keep));
+  for (vtkIdType& end : this->RowEnds)
+  {
+    end = std::min(end, keep);
+  }
+  return n;
+}
+
+//------------------------------------------------------------------------------
+vtkIdType vtkErrorDiffusionPointAssembler::Grow(vtkIdType n)
+{
+  const vtkIdType first = this->Total;
+  if (n > 0) // setting an array's count to 0 would free the room Begin reserved
+  {
+    this->Reserve(first + n);
+    this->Total = first + n;
+  }
+  return first;
+}
+
+//------------------------------------------------------------------------------
+void vtkErrorDiffusionPointAssembler::Write(
+  const LayerSamples& samples, vtkIdType first, bool others) const
+{
+  const vtkIdType n = samples.Count();
+  if (n <= 0)
+  {
+    return;
+  }
+  const int z = samples.Z;
+  if (auto* d = vtkDoubleArray::SafeDownCast(this->Coordinates))
+  {
+    WriteCenters(d->GetPointer(3 * first), this->IndexToPhysical, this->Extent, z, samples.Ids,
+      samples.RowEnds, this->Jitter, this->JitterSeed);
+  }
+  else
+  {
+    WriteCenters(vtkFloatArray::SafeDownCast(this->Coordinates)->GetPointer(3 * first),
+      this->IndexToPhysical, this->Extent, z, samples.Ids, samples.RowEnds, this->Jitter,
+      this->JitterSeed);
+  }
+  float* densities = this->Densities->GetPointer(first);
+  if (samples.LayerDensity)
+  {
+    for (vtkIdType p = 0; p < n; ++p)
+    {
+      densities[p] = samples.LayerDensity[samples.Ids[p]];
+    }
+  }
+  else
+  {
+    std::copy(samples.Densities.begin(), samples.Densities.begin() + n, densities);
+  }
   // The layer's first voxel in the source image (full x and y extent).
   const vtkIdType layerSize = static_cast<vtkIdType>(this->SourceExtent[1] - this->SourceExtent[0] + 1) *
     (this->SourceExtent[3] - this->SourceExtent[2] + 1);
   const vtkIdType layerFirst = static_cast<vtkIdType>(z - this->SourceExtent[4]) * layerSize;
-  const vtkIdType* ids = this->LayerIds.data();
+  const vtkIdType* ids = samples.Ids.data();
   for (size_t a = 0; a < this->Targets.size(); ++a)
   {
     auto* source = vtkDataArray::SafeDownCast(this->Sources[a]);
     auto* target = vtkDataArray::SafeDownCast(this->Targets[a]);
+    if (!others && !WritableSideBySide(source, target))
+    {
+      continue; // left to WriteOthers
+    }
     if (source && target)
     {
       using Dispatcher = vtkArrayDispatch::Dispatch2SameValueType;
@@ -666,6 +738,47 @@ void vtkErrorDiffusionPointAssembler::CopyAttributes(int z, vtkIdType first, vtk
 }
 
 //------------------------------------------------------------------------------
+void vtkErrorDiffusionPointAssembler::WriteOthers(const LayerSamples& samples, vtkIdType first)
+{
+  const vtkIdType layerSize = static_cast<vtkIdType>(this->SourceExtent[1] - this->SourceExtent[0] + 1) *
+    (this->SourceExtent[3] - this->SourceExtent[2] + 1);
+  const vtkIdType layerFirst = static_cast<vtkIdType>(samples.Z - this->SourceExtent[4]) * layerSize;
+  const vtkIdType* ids = samples.Ids.data();
+  const vtkIdType n = samples.Count();
+  for (size_t a = 0; a < this->Targets.size(); ++a)
+  {
+    if (WritableSideBySide(this->Sources[a], this->Targets[a]))
+    {
+      continue;
+    }
+    auto* source = vtkDataArray::SafeDownCast(this->Sources[a]);
+    auto* target = vtkDataArray::SafeDownCast(this->Targets[a]);
+    if (source && target)
+    {
+      GatherWorker()(source, target, ids, n, layerFirst, first);
+      continue;
+    }
+    for (vtkIdType p = 0; p < n; ++p)
+    {
+      this->Targets[a]->SetTuple(first + p, layerFirst + ids[p], this->Sources[a]);
+    }
+  }
+}
+
+//------------------------------------------------------------------------------
+bool vtkErrorDiffusionPointAssembler::HasOtherArrays() const
+{
+  for (size_t a = 0; a < this->Targets.size(); ++a)
+  {
+    if (!WritableSideBySide(this->Sources[a], this->Targets[a]))
+    {
+      return true;
+    }
+  }
+  return false;
+}
+
+//------------------------------------------------------------------------------
 void vtkErrorDiffusionPointAssembler::AddLayer(
   int z, const float* density, const unsigned char* mask, vtkIdType count)
 {
@@ -673,17 +786,12 @@ void vtkErrorDiffusionPointAssembler::AddLayer(
   {
     return;
   }
-  const vtkIdType n = this->CompactLayer(mask);
-  const vtkIdType first = this->Total;
-  this->Reserve(first + n);
-  this->WriteCoordinates(z, first);
-  float* values = this->Densities->GetPointer(first);
-  for (vtkIdType p = 0; p < n; ++p)
-  {
-    values[p] = density[this->LayerIds[p]];
-  }
-  this->CopyAttributes(z, first, n);
-  this->Total = first + n;
+  // In place, without Compact's copy: Ids has room for a whole layer.
+  this->Layer.Z = z;
+  this->Layer.Densities.clear();
+  this->Layer.LayerDensity = density;
+  this->CompactLayer(mask, this->Layer.Ids.data(), this->Layer.RowEnds);
+  this->Write(this->Layer, this->Grow(this->Layer.Count()), true);
 }
 
 //------------------------------------------------------------------------------

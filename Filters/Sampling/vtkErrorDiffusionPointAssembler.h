@@ -99,6 +99,47 @@ public:
   /// Points appended so far.
   vtkIdType GetNumberOfPoints() const { return this->Total; }
 
+  /**
+   * The samples of one layer, compacted: AddLayer in two halves, so that
+   * layers sampled on other threads can be compacted there and written in
+   * order into room taken on one thread (Grow).
+   */
+  struct LayerSamples
+  {
+    int Z = 0;                      ///< global layer
+    std::vector<vtkIdType> Ids;     ///< in-layer indices of the samples, row by row
+    std::vector<vtkIdType> RowEnds; ///< where each row's samples end in Ids
+    std::vector<float> Densities;   ///< the density each sample was drawn with
+    /// Else (Densities empty) the layer's densities, by in-layer index.
+    const float* LayerDensity = nullptr;
+    vtkIdType Count() const { return this->RowEnds.empty() ? 0 : this->RowEnds.back(); }
+    /// Drops the last n samples (at most all); returns how many went.
+    vtkIdType DropLast(vtkIdType n);
+  };
+
+  /**
+   * Compacts the samples of global layer z (as AddLayer takes them) into
+   * `samples`; `scratch` is a buffer of the caller's. Reads nothing that
+   * changes while layers are added: any thread may call it.
+   */
+  void Compact(int z, const float* density, const unsigned char* mask,
+    std::vector<vtkIdType>& scratch, LayerSamples& samples) const;
+
+  /// Room for n more points after those appended; returns the first one's index.
+  vtkIdType Grow(vtkIdType n);
+
+  /**
+   * Writes compacted samples as points [first, first + Count()) (room from
+   * Grow). Writes only there: threads may write disjoint ranges at the same
+   * time, but then without the arrays whose values share memory or are not
+   * plain numbers (bits, strings: others false), which WriteOthers writes
+   * afterwards on one thread.
+   */
+  void Write(const LayerSamples& samples, vtkIdType first, bool others) const;
+  void WriteOthers(const LayerSamples& samples, vtkIdType first);
+  /// Whether an array is carried that Write leaves to WriteOthers.
+  bool HasOtherArrays() const;
+
   /// Drops the last n points appended (at most all); returns how many went.
   vtkIdType RemoveLast(vtkIdType n);
 
@@ -134,9 +175,8 @@ private:
   void AddTargets(vtkPointData* inPD, vtkIdType points, vtkPointData* outPD);
   vtkSmartPointer<vtkAbstractArray> TargetFor(vtkAbstractArray* source);
   void Reserve(vtkIdType tuples);
-  vtkIdType CompactLayer(const unsigned char* mask);
-  void WriteCoordinates(int z, vtkIdType first);
-  void CopyAttributes(int z, vtkIdType first, vtkIdType n);
+  vtkIdType CompactLayer(
+    const unsigned char* mask, vtkIdType* ids, std::vector<vtkIdType>& rowEnds) const;
 
   int Extent[6] = { 0, -1, 0, -1, 0, -1 };       // sampled
   int SourceExtent[6] = { 0, -1, 0, -1, 0, -1 }; // of the image the arrays come from
@@ -164,8 +204,7 @@ private:
     const std::string& role, const char* className, int components);
   template <typename ArrayT>
   vtkSmartPointer<ArrayT> NewOrRecycled(const std::string& role, int components);
-  std::vector<vtkIdType> LayerIds; // in-layer indices of one layer's samples
-  std::vector<vtkIdType> RowEnds;  // where each row's samples end in LayerIds
+  LayerSamples Layer; // AddLayer's layer, compacted in place
   // This assembler's blocks freed by their arrays, kept for its next run.
   std::shared_ptr<vtkErrorDiffusionBlockPool> Pool;
 };

@@ -91,10 +91,10 @@ void AddFieldArray(vtkFieldData* fd, vtkDataArray* array, const char* name, int 
 // points' coordinates, which single precision far from the origin rounds to
 // another voxel, even one outside the mask: an out-of-bounds write found by
 // fuzzing.)
-void ClearLastVoxels(vtkUnsignedCharArray* mask, vtkIdType n)
+void ClearLastVoxels(vtkUnsignedCharArray* mask, vtkIdType begin, vtkIdType end, vtkIdType n)
 {
   unsigned char* values = mask->GetPointer(0);
-  for (vtkIdType i = mask->GetNumberOfValues() - 1; i >= 0 && n > 0; --i)
+  for (vtkIdType i = end - 1; i >= begin && n > 0; --i)
   {
     if (values[i])
     {
@@ -136,9 +136,10 @@ bool SelectTable(
 }
 
 //------------------------------------------------------------------------------
-// The state of one run: its plan (which layers each step reads) and what is
-// carried from one step (one execution of a streamed run) to the next.
-class vtkErrorDiffusionSampler::vtkInternals : public vtkErrorDiffusionLayerBacklog::Sink
+// The state of one run: its plan (which layers each step reads, which z-part
+// samples which layers) and what is carried from one step (one execution of a
+// streamed run) to the next.
+class vtkErrorDiffusionSampler::vtkInternals
 {
 public:
   class SlabScan;
@@ -150,6 +151,153 @@ public:
     int Last = -1;
   };
 
+  // One z-part of the sampled layers: its own scan (from its overlap on) and
+  // relaxation. A run in one part adds each final layer to the output at
+  // once; of parts scanned side by side only the writer does, the others
+  // keep their final layers compacted until they are the writer (see
+  // ScanParts). Parts live from run to run: the first one's kernel keeps the
+  // charge curves it calibrated, and all keep the memory they held layers in.
+  struct Part : public vtkErrorDiffusionLayerBacklog::Sink
+  {
+    using Samples = vtkErrorDiffusionPointAssembler::LayerSamples;
+    vtkInternals* Run = nullptr;
+    int First = 0; // sampled layers
+    int Last = -1;
+    int ScanFirst = 0; // first layer scanned (overlap included)
+    vtkErrorDiffusionKernel Kernel;
+    vtkBlueNoiseRelaxation Relaxation;
+    vtkErrorDiffusionLayerBacklog Backlog; // the relaxation's final layers, to Emit
+    vtkErrorDiffusionLayerRunner Runner;   // its rounds, when parts run side by side
+    std::vector<Samples> Held;             // final layers not written yet (Held[0, Count))
+    size_t Count = 0;
+    bool Direct = true;  // the writer: its layers go straight into the output
+    bool Ended = false;  // its last layer was scanned in the round just run
+    std::vector<vtkIdType> Scratch; // the compaction's buffer
+
+    // A final layer of samples: into the points (or held, see above), and
+    // into the mask unless the kernel wrote it there. From the thread that
+    // scans the part, or from the scan thread for a relaxed layer (the
+    // backlog emits one layer at a time, under its lock).
+    void Emit(int z, const float* density, const unsigned char* mask, vtkIdType count)
+    {
+      vtkInternals& run = *this->Run;
+      if (this->Direct)
+      {
+        run.Assembler.AddLayer(z, density, mask, count);
+      }
+      else
+      {
+        if (this->Count == this->Held.size())
+        {
+          this->Held.emplace_back();
+        }
+        run.Assembler.Compact(z, density, mask, this->Scratch, this->Held[this->Count++]);
+      }
+      if (run.Mask)
+      {
+        unsigned char* stored = run.Mask->GetPointer((z - run.Sampled[4]) * run.LayerSize());
+        if (stored != mask)
+        {
+          std::copy(mask, mask + run.LayerSize(), stored);
+        }
+      }
+    }
+
+    void Emit(const vtkBlueNoiseRelaxation::Layer& layer) override
+    {
+      this->Emit(layer.Z, layer.Density, layer.Mask, layer.Count);
+    }
+
+    // A layer the scan finished: final, or on to the relaxation first.
+    void Receive(int z, const float* density, const unsigned char* mask, vtkIdType count)
+    {
+      if (z < this->First)
+      {
+        // An overlap layer: it settles the scan, and the last few are what the
+        // relaxation of the part's first layers sees below them.
+        if (this->Run->Relaxing && z >= this->RelaxFirst())
+        {
+          this->Relaxation.Push(z, density, mask);
+        }
+        return;
+      }
+      if (!this->Run->Relaxing)
+      {
+        this->Emit(z, density, mask, count);
+        return;
+      }
+      this->Backlog.BeforePush();
+      this->Backlog.AfterPush(this->Relaxation.Push(z, density, mask));
+      if (z == this->Last)
+      {
+        this->Backlog.AfterPush(this->Relaxation.Flush());
+        this->Backlog.EmitAll();
+      }
+    }
+
+    // The first layer the relaxation sees: the overlap layers its search reaches.
+    int RelaxFirst() const
+    {
+      return std::max(this->ScanFirst, this->First - vtkBlueNoiseRelaxation::MaximumRadius);
+    }
+
+    // The points held.
+    vtkIdType HeldPoints() const
+    {
+      vtkIdType n = 0;
+      for (size_t l = 0; l < this->Count; ++l)
+      {
+        n += this->Held[l].Count();
+      }
+      return n;
+    }
+
+    // The held layers after the output's points, by the writer (the one
+    // thread that writes there).
+    void WriteHeld()
+    {
+      vtkErrorDiffusionPointAssembler& assembler = this->Run->Assembler;
+      vtkIdType first = assembler.Grow(this->HeldPoints());
+      for (size_t l = 0; l < this->Count; ++l)
+      {
+        assembler.Write(this->Held[l], first, true);
+        first += this->Held[l].Count();
+      }
+      this->Count = 0;
+    }
+
+    // Error diffusion cannot take a point back: a scan that ends on negative
+    // error fired that many points ahead of their mass, in the last layers
+    // that have points (see vtkErrorDiffusionKernel); they go, from the
+    // output when this part writes there (they are its last points), else
+    // from the layers it holds.
+    void DropAheadPoints(bool diffusion)
+    {
+      vtkInternals& run = *this->Run;
+      const double leftover = this->Kernel.GetCarriedError();
+      if (!diffusion || leftover > -0.5)
+      {
+        return;
+      }
+      vtkIdType n = static_cast<vtkIdType>(std::llround(-leftover));
+      vtkIdType removed = 0;
+      if (this->Direct)
+      {
+        removed = run.Assembler.RemoveLast(n);
+      }
+      for (size_t l = this->Count; !this->Direct && l > 0 && removed < n; --l)
+      {
+        removed += this->Held[l - 1].DropLast(n - removed);
+      }
+      if (run.Mask)
+      {
+        const vtkIdType layer = run.LayerSize();
+        ClearLastVoxels(run.Mask, (this->First - run.Sampled[4]) * layer,
+          (this->Last - run.Sampled[4] + 1) * layer, removed);
+      }
+    }
+  };
+
   // The plan, made in RequestUpdateExtent before the first execution.
   int Whole[6] = { 0, -1, 0, -1, 0, -1 };
   int Sampled[6] = { 0, -1, 0, -1, 0, -1 }; // the piece: full layers
@@ -157,6 +305,7 @@ public:
   bool Piece = false;                       // one piece of several
   bool Cells = false;                       // the sites are the input's cells
   std::vector<Step> Steps;
+  std::vector<std::unique_ptr<Part>> Parts; // at least one
   size_t Current = 0;
   bool Running = false;
   bool Executing = false; // inside RequestData (see RequestData)
@@ -166,10 +315,7 @@ public:
   // The run.
   vtkSamplingDensity Density;
   vtkSamplingBudget Statistics;
-  vtkErrorDiffusionKernel Kernel;
   vtkErrorDiffusionPointAssembler Assembler;
-  vtkBlueNoiseRelaxation Relaxation;
-  vtkErrorDiffusionLayerBacklog Backlog; // the relaxation's final layers, to Emit
   vtkSmartPointer<vtkPolyData> Points;
   vtkSmartPointer<vtkUnsignedCharArray> Mask;
   std::vector<double> LayerSums; // expected points per sampled layer
@@ -177,61 +323,25 @@ public:
   double ProgressTotal = 1.0;
   double ProgressDone = 0.0;
 
-  // A final layer of samples: into the points, and into the mask unless the
-  // kernel wrote it there. From the calling thread, or from the scan thread
-  // for a relaxed layer (the backlog emits one layer at a time, under its
-  // lock).
-  void Emit(int z, const float* density, const unsigned char* mask, vtkIdType count)
-  {
-    this->Assembler.AddLayer(z, density, mask, count);
-    if (this->Mask)
-    {
-      unsigned char* stored = this->Mask->GetPointer((z - this->Sampled[4]) * this->LayerSize());
-      if (stored != mask)
-      {
-        std::copy(mask, mask + this->LayerSize(), stored);
-      }
-    }
-  }
+  vtkInternals() { this->Parts.emplace_back(new Part); }
 
-  void Emit(const vtkBlueNoiseRelaxation::Layer& layer) override
-  {
-    this->Emit(layer.Z, layer.Density, layer.Mask, layer.Count);
-  }
+  Part& First() { return *this->Parts.front(); }
 
-  // A layer the scan finished: final, or on to the relaxation first.
-  void Receive(int z, const float* density, const unsigned char* mask, vtkIdType count)
-  {
-    if (z < this->Sampled[4])
-    {
-      // An overlap layer: it settles the scan, and the last few are what the
-      // relaxation of the piece's first layers sees below them (returned at
-      // once, never emitted).
-      if (this->Relaxing && z >= this->RelaxFirst())
-      {
-        this->Relaxation.Push(z, density, mask);
-      }
-      return;
-    }
-    if (!this->Relaxing)
-    {
-      this->Emit(z, density, mask, count);
-      return;
-    }
-    this->Backlog.BeforePush();
-    this->Backlog.AfterPush(this->Relaxation.Push(z, density, mask));
-    if (z == this->Sampled[5])
-    {
-      this->Backlog.AfterPush(this->Relaxation.Flush());
-      this->Backlog.EmitAll();
-    }
-  }
+  // The layers that parts done with a step hold, after the output's points.
+  void WriteHeld(const std::vector<Part*>& parts);
 
-  // The first layer the relaxation sees: the overlap layers its search
-  // reaches below the first sampled one.
-  int RelaxFirst() const
+  // What a run held goes when it ends, or when a new pass of the pipeline
+  // drops an unfinished one: the parts but the first (whose kernel outlives
+  // the run), what they held, the points and the mask.
+  void EndRun()
   {
-    return std::max(this->ScanFirst, this->Sampled[4] - vtkBlueNoiseRelaxation::MaximumRadius);
+    for (auto& part : this->Parts)
+    {
+      part->Backlog.Clear();
+      part->Count = 0;
+    }
+    this->Points = nullptr;
+    this->Mask = nullptr;
   }
 
   int NX() const { return this->Whole[1] - this->Whole[0] + 1; }
@@ -286,6 +396,26 @@ vtkMTimeType vtkErrorDiffusionSampler::GetMTime()
 }
 
 //------------------------------------------------------------------------------
+int vtkErrorDiffusionSampler::GetNumberOfParts()
+{
+  const vtkInternals& run = *this->Internals;
+  return run.Steps.empty() ? 0 : static_cast<int>(run.Parts.size());
+}
+
+//------------------------------------------------------------------------------
+void vtkErrorDiffusionSampler::GetPartRange(int i, int range[3])
+{
+  range[0] = range[1] = range[2] = -1;
+  if (i >= 0 && i < this->GetNumberOfParts())
+  {
+    const vtkInternals::Part& part = *this->Internals->Parts[static_cast<size_t>(i)];
+    range[0] = part.ScanFirst;
+    range[1] = part.First;
+    range[2] = part.Last;
+  }
+}
+
+//------------------------------------------------------------------------------
 vtkImageData* vtkErrorDiffusionSampler::GetMaskOutput()
 {
   return vtkImageData::SafeDownCast(this->GetOutputDataObject(1));
@@ -321,8 +451,7 @@ int vtkErrorDiffusionSampler::RequestInformation(
   if (!this->Internals->Executing)
   {
     this->Internals->Running = false;
-    this->Internals->Points = nullptr;
-    this->Internals->Mask = nullptr;
+    this->Internals->EndRun();
   }
   const int empty[6] = { 0, -1, 0, -1, 0, -1 };
   maskInfo->CopyEntry(inInfo, wholeKey);
@@ -467,6 +596,40 @@ void vtkErrorDiffusionSampler::PlanRun(const int whole[6], int piece, int pieces
   for (const auto& slab : SplitLayers(run.ScanFirst, run.Sampled[5], slabs))
   {
     run.Steps.push_back({ false, slab[0], slab[1] });
+  }
+  this->PlanParts(atOnce);
+}
+
+//------------------------------------------------------------------------------
+// The z-parts of the sampled layers, by the volume's size alone (so that the
+// output does not depend on the threads): parts of at least PartLayers layers
+// and PartVoxels voxels, each scanning OverlapLayers layers before its own
+// first. The relaxation, the whole-volume methods and volumes below two parts'
+// size are sampled in one part.
+void vtkErrorDiffusionSampler::PlanParts(bool atOnce)
+{
+  vtkInternals& run = *this->Internals;
+  const vtkIdType layers = run.SampledLayers();
+  vtkIdType count = 1;
+  if (!atOnce && run.LayerSize() > 0)
+  {
+    count = std::max<vtkIdType>(1,
+      std::min(layers / this->PartLayers, layers * run.LayerSize() / this->PartVoxels));
+  }
+  const auto ranges = SplitLayers(run.Sampled[4], run.Sampled[5], static_cast<int>(count));
+  run.Parts.resize(std::max<size_t>(1, ranges.size()));
+  for (size_t p = 0; p < run.Parts.size(); ++p)
+  {
+    if (!run.Parts[p])
+    {
+      run.Parts[p].reset(new vtkInternals::Part);
+    }
+    vtkInternals::Part& part = *run.Parts[p];
+    part.Run = &run;
+    part.First = p < ranges.size() ? ranges[p][0] : run.Sampled[4];
+    part.Last = p < ranges.size() ? ranges[p][1] : run.Sampled[5];
+    part.ScanFirst =
+      p == 0 ? run.ScanFirst : std::max(run.Whole[4], part.First - this->OverlapLayers);
   }
 }
 
@@ -616,16 +779,29 @@ bool vtkErrorDiffusionSampler::StartRun(vtkInformation*, vtkInformationVector**)
     run.Density.SetRange(this->ScalarRange[0], this->ScalarRange[1]);
   }
   run.Statistics.Reset();
-  // The kernel is kept from run to run with the charge curves it used last
-  // (Begin resets the rest).
-  run.Kernel.SetParameters(table);
-  run.Kernel.SetModulationScale(this->ModulationScale);
-  run.Kernel.SetSeed(static_cast<std::uint64_t>(this->Seed));
-  run.Kernel.SetMethod(this->Method == METHOD_WHITE_NOISE
+  // The first part's kernel is kept from run to run with the charge curves
+  // it used last (Begin resets the rest); the other parts start from it and
+  // share its curves.
+  vtkErrorDiffusionKernel& kernel = run.First().Kernel;
+  kernel.SetParameters(table);
+  kernel.SetModulationScale(this->ModulationScale);
+  kernel.SetSeed(static_cast<std::uint64_t>(this->Seed));
+  kernel.SetMethod(this->Method == METHOD_WHITE_NOISE
       ? vtkErrorDiffusionKernel::METHOD_WHITE_NOISE
       : vtkErrorDiffusionKernel::METHOD_ERROR_DIFFUSION);
-  run.Kernel.SetWarmUpLayers(this->WarmUpLayers);
-  run.Kernel.Begin(run.NX(), run.NY(), run.ScanFirst);
+  kernel.SetWarmUpLayers(this->WarmUpLayers);
+  kernel.Begin(run.NX(), run.NY(), run.ScanFirst);
+  for (auto& part : run.Parts)
+  {
+    if (part.get() != &run.First())
+    {
+      part->Kernel = kernel;
+      part->Kernel.Begin(run.NX(), run.NY(), part->ScanFirst);
+    }
+    part->Count = 0;
+    part->Direct = true;
+    part->Ended = false;
+  }
   run.Points = vtkSmartPointer<vtkPolyData>::New();
   run.Mask = nullptr;
   run.AssemblerStarted = false;
@@ -724,6 +900,15 @@ bool vtkErrorDiffusionSampler::StartAssembly(vtkImageData* input)
   run.Assembler.Begin(input, run.Sampled, run.Points->GetPointData(),
     this->OutputPointsPrecision == DOUBLE_PRECISION ? VTK_DOUBLE : VTK_FLOAT);
   run.Assembler.SetJitter(this->Jitter, static_cast<std::uint64_t>(this->Seed));
+  if (run.Relaxing)
+  {
+    for (auto& part : run.Parts)
+    {
+      part->Relaxation.Begin(run.NX(), run.NY(), part->RelaxFirst(),
+        static_cast<std::uint64_t>(this->Seed), part->First);
+      part->Backlog.SetSink(part.get());
+    }
+  }
   for (const std::string& name : run.Assembler.GetSkippedArrays())
   {
     vtkWarningMacro("The point array '" << name << "' does not have one tuple per voxel: it is "
@@ -735,32 +920,30 @@ bool vtkErrorDiffusionSampler::StartAssembly(vtkImageData* input)
     run.Mask->SetName("SampleMask");
     run.Mask->SetNumberOfValues(run.LayerSize() * run.SampledLayers());
   }
-  if (run.Relaxing)
-  {
-    run.Relaxation.Begin(run.NX(), run.NY(), run.RelaxFirst(),
-      static_cast<std::uint64_t>(this->Seed), run.Sampled[4]);
-    run.Backlog.SetSink(&run);
-  }
   run.AssemblerStarted = true;
   return true;
 }
 
 //------------------------------------------------------------------------------
-// The stages of one slab's scan (vtkErrorDiffusionLayerRunner): densities from
-// the input, finished layers to the output (through the relaxation for the
-// default method), progress and abort from the calling thread.
+// The stages of one part's scan of layers [first, last]
+// (vtkErrorDiffusionLayerRunner): densities from the input, finished layers to
+// the part's points (through the relaxation for the default method); with
+// `report`, progress and abort from the calling thread (the scan of a run in
+// one part), else nothing that is not the part's own (parts side by side).
 class vtkErrorDiffusionSampler::vtkInternals::SlabScan
   : public vtkErrorDiffusionLayerRunner::Stages
 {
 public:
-  SlabScan(vtkErrorDiffusionSampler* filter, vtkImageData* input, vtkDataArray* array)
+  SlabScan(vtkErrorDiffusionSampler* filter, Part& part, vtkImageData* input,
+    vtkDataArray* array, int first, int last, bool report)
     : Filter(filter)
     , Run(*filter->Internals)
-    , Slab(Run.Steps[Run.Current])
+    , Work(part)
+    , First(first)
     , Array(array)
     , LayerSize(Run.LayerSize())
-    , Overlap(Run.ScanFirst < Run.Sampled[4])
-    , ProgressStride(std::max(1, (Slab.Last - Slab.First + 1) / 100))
+    , Report(report)
+    , ProgressStride(std::max(1, (last - first + 1) / 100))
   {
     input->GetExtent(this->Extent);
     vtkUnsignedCharArray* ghosts = input->GetPointGhostArray();
@@ -769,11 +952,11 @@ public:
 
   void Fill(int k, float* density) override
   {
-    const int z = this->Slab.First + k;
+    const int z = this->First + k;
     const vtkIdType begin = (z - this->Extent[4]) * this->LayerSize;
     const double sum =
       this->Run.Density.Fill(this->Array, begin, begin + this->LayerSize, this->Ghosts, density);
-    if (z >= this->Run.Sampled[4] && z <= this->Run.Sampled[5])
+    if (z >= this->Work.First && z <= this->Work.Last)
     {
       this->Run.LayerSums[z - this->Run.Sampled[4]] = sum;
     }
@@ -783,8 +966,8 @@ public:
   // (not a relaxed one: the relaxation moves samples first).
   unsigned char* MaskStorage(int k) override
   {
-    const int z = this->Slab.First + k;
-    if (!this->Run.Mask || this->Run.Relaxing || z < this->Run.Sampled[4])
+    const int z = this->First + k;
+    if (!this->Run.Mask || this->Run.Relaxing || z < this->Work.First)
     {
       return nullptr;
     }
@@ -793,17 +976,21 @@ public:
 
   void BeforeScan(int k, const float* density) override
   {
-    if (this->Overlap && this->Slab.First + k == this->Run.Sampled[4])
+    if (this->First + k == this->Work.First && this->Work.ScanFirst < this->Work.First)
     {
-      this->Run.Kernel.CenterCarriedError(density); // the overlap shapes, but adds nothing
+      this->Work.Kernel.CenterCarriedError(density); // the overlap shapes, but adds nothing
     }
   }
 
-  bool Idle() override { return this->Run.Relaxing && this->Run.Backlog.EmitOne(); }
+  bool Idle() override { return this->Run.Relaxing && this->Work.Backlog.EmitOne(); }
 
   bool Consume(const vtkErrorDiffusionLayerRunner::Layer& l) override
   {
-    this->Run.Receive(this->Slab.First + l.Index, l.Density, l.Mask, l.Count);
+    this->Work.Receive(this->First + l.Index, l.Density, l.Mask, l.Count);
+    if (!this->Report)
+    {
+      return true;
+    }
     this->Run.ProgressDone += 1.0;
     if (l.Index % this->ProgressStride == 0)
     {
@@ -815,10 +1002,11 @@ public:
 private:
   vtkErrorDiffusionSampler* Filter;
   vtkInternals& Run;
-  const Step& Slab;
+  Part& Work;
+  int First;
   vtkDataArray* Array;
   vtkIdType LayerSize;
-  bool Overlap;
+  bool Report;
   int ProgressStride;
   int Extent[6];
   const unsigned char* Ghosts = nullptr;
@@ -826,28 +1014,186 @@ private:
 
 //------------------------------------------------------------------------------
 // One sampling step of a scanning method: the layers of one slab through the
-// kernel on the runner.
+// kernel on the runner, in one part or in parts side by side.
 bool vtkErrorDiffusionSampler::ScanSlab(vtkImageData* input, vtkDataArray* array)
 {
   vtkInternals& run = *this->Internals;
+  if (run.Parts.size() > 1)
+  {
+    return this->ScanParts(input, array);
+  }
   const vtkInternals::Step& step = run.Steps[run.Current];
+  vtkInternals::Part& part = run.First();
   const int layers = step.Last - step.First + 1;
   vtkErrorDiffusionLayerRunner runner;
   runner.SetThreaded(this->UseWorkerThread && layers > 1 &&
     run.LayerSize() * layers >= MinimumVoxelsForWorkerThread &&
     vtkBlueNoiseThreads::Available() > 1);
-  vtkInternals::SlabScan stages(this, input, array);
-  if (!runner.Run(run.Kernel, stages, run.NX(), run.NY(), layers, step.Last < run.Sampled[5]))
+  vtkInternals::SlabScan stages(this, part, input, array, step.First, step.Last, true);
+  if (!runner.Run(part.Kernel, stages, run.NX(), run.NY(), layers, step.Last < run.Sampled[5]))
   {
-    run.Backlog.Clear();
+    part.Backlog.Clear();
     if (!runner.GetError().empty())
     {
       vtkErrorMacro("Sampling failed: " << runner.GetError());
     }
     return false;
   }
-  run.Backlog.EmitAll(); // before the next step's input replaces this one
+  part.Backlog.EmitAll(); // before the next step's input replaces this one
   return true;
+}
+
+//------------------------------------------------------------------------------
+// One sampling step in parts side by side, a round of a few layers at a time:
+// each round scans the lowest parts of the step that are not done, one per
+// thread allowed. The lowest part whose points are not all in the output (the
+// writer) adds its layers to the output as they come, after the layers it
+// held; the others hold theirs until they are the writer. So the points are
+// in z order, part after part, whatever the threads. Between rounds the
+// calling thread drops the points a part that ended fired ahead of their mass
+// (see FinishOutput), reports progress and honors abort.
+bool vtkErrorDiffusionSampler::ScanParts(vtkImageData* input, vtkDataArray* array)
+{
+  vtkInternals& run = *this->Internals;
+  const vtkInternals::Step& step = run.Steps[run.Current];
+  struct Share
+  {
+    vtkInternals::Part* Part;
+    int Next;
+    int Last;
+    std::string Error;
+    bool Done() const { return this->Next > this->Last; }
+  };
+  std::vector<Share> shares;
+  double total = 0.0;
+  for (auto& part : run.Parts)
+  {
+    const int first = std::max(step.First, part->ScanFirst);
+    const int last = std::min(step.Last, part->Last);
+    if (first <= last)
+    {
+      shares.push_back({ part.get(), first, last, std::string() });
+      total += last - first + 1;
+    }
+  }
+  const int round = static_cast<int>(
+    std::max<vtkIdType>(2, (vtkIdType(1) << 22) / std::max<vtkIdType>(1, run.LayerSize())));
+  const size_t threads = static_cast<size_t>(std::max(1, vtkBlueNoiseThreads::Available()));
+  const double base = run.ProgressDone;
+  const double width = step.Last - step.First + 1;
+  const bool diffusion =
+    this->Method == METHOD_ERROR_DIFFUSION || this->Method == METHOD_RELAXED_ERROR_DIFFUSION;
+  size_t writer = 0;
+  std::vector<Share*> tasks;
+  std::vector<vtkInternals::Part*> done;
+  for (;;)
+  {
+    done.clear();
+    for (; writer < shares.size() && shares[writer].Done(); ++writer)
+    {
+      done.push_back(shares[writer].Part);
+    }
+    run.WriteHeld(done);
+    tasks.clear();
+    for (size_t s = writer; s < shares.size() && tasks.size() < threads; ++s)
+    {
+      if (!shares[s].Done())
+      {
+        tasks.push_back(&shares[s]);
+      }
+    }
+    if (tasks.empty())
+    {
+      break;
+    }
+    vtkBlueNoiseThreads::ForEach(static_cast<int>(tasks.size()), [&](int i) {
+      Share& share = *tasks[static_cast<size_t>(i)];
+      vtkInternals::Part& part = *share.Part;
+      part.Direct = &share == &shares[writer];
+      if (part.Direct)
+      {
+        part.WriteHeld();
+      }
+      // A part's first round takes its overlap too: the rounds of parts side by
+      // side then end together.
+      const int to = std::min(share.Last, std::max(share.Next, part.First) + round - 1);
+      vtkInternals::SlabScan stages(this, part, input, array, share.Next, to, false);
+      if (!part.Runner.Run(
+            part.Kernel, stages, run.NX(), run.NY(), to - share.Next + 1, to < part.Last))
+      {
+        share.Error = part.Runner.GetError().empty() ? "a part stopped" : part.Runner.GetError();
+      }
+      share.Next = to + 1;
+      part.Ended = share.Next > part.Last;
+      if (share.Done())
+      {
+        part.Backlog.EmitAll(); // before the next step's input replaces this one
+      }
+    });
+    double done = 0.0;
+    for (Share& share : shares)
+    {
+      if (!share.Error.empty())
+      {
+        vtkErrorMacro("Sampling failed: " << share.Error);
+        return false;
+      }
+      if (share.Part->Ended)
+      {
+        share.Part->DropAheadPoints(diffusion);
+        share.Part->Ended = false;
+      }
+      done += share.Next - std::max(step.First, share.Part->ScanFirst);
+    }
+    run.ProgressDone = base + width * done / total;
+    this->UpdateProgress(run.ProgressDone / run.ProgressTotal);
+    if (this->IsAborted())
+    {
+      return false;
+    }
+  }
+  run.ProgressDone = base + width;
+  return true;
+}
+
+//------------------------------------------------------------------------------
+// The layers that parts done with the step hold, in part order: written side
+// by side, a layer a task, at their places after the output's points (the
+// arrays whose values share memory or are not plain numbers on this thread
+// afterwards).
+void vtkErrorDiffusionSampler::vtkInternals::WriteHeld(const std::vector<Part*>& parts)
+{
+  struct Placed
+  {
+    const Part::Samples* Layer;
+    vtkIdType First;
+  };
+  std::vector<Placed> layers;
+  vtkIdType total = 0;
+  for (const Part* part : parts)
+  {
+    for (size_t l = 0; l < part->Count; ++l)
+    {
+      layers.push_back({ &part->Held[l], total });
+      total += part->Held[l].Count();
+    }
+  }
+  if (total > 0)
+  {
+    const vtkIdType base = this->Assembler.Grow(total);
+    vtkBlueNoiseThreads::ForEach(static_cast<int>(layers.size()), [&](int l) {
+      const Placed& placed = layers[static_cast<size_t>(l)];
+      this->Assembler.Write(*placed.Layer, base + placed.First, false);
+    });
+    for (size_t l = 0; this->Assembler.HasOtherArrays() && l < layers.size(); ++l)
+    {
+      this->Assembler.WriteOthers(*layers[l].Layer, base + layers[l].First);
+    }
+  }
+  for (Part* part : parts)
+  {
+    part->Count = 0;
+  }
 }
 
 //------------------------------------------------------------------------------
@@ -925,7 +1271,7 @@ bool vtkErrorDiffusionSampler::SampleWhole(vtkImageData* input, vtkDataArray* ar
   for (vtkIdType k = 0; k < run.SampledLayers(); ++k)
   {
     const unsigned char* bits = mask.data() + k * layer;
-    run.Emit(run.Sampled[4] + static_cast<int>(k), density.data() + k * layer, bits,
+    run.First().Emit(run.Sampled[4] + static_cast<int>(k), density.data() + k * layer, bits,
       std::count(bits, bits + layer, 1));
   }
   run.ProgressDone = run.ProgressTotal;
@@ -959,27 +1305,18 @@ void vtkErrorDiffusionSampler::FinishOutput(
   {
     expected += sum;
   }
+  vtkPolyData* points = run.Points;
   if (run.AssemblerStarted)
   {
-    // Error diffusion cannot take a point back: a scan that ends on negative
-    // error fired that many points ahead of their mass, in the last layers
-    // that have points (see vtkErrorDiffusionKernel); they go.
-    const double leftover = run.Kernel.GetCarriedError();
-    const bool diffusion =
-      this->Method == METHOD_ERROR_DIFFUSION || this->Method == METHOD_RELAXED_ERROR_DIFFUSION;
-    if (diffusion && leftover <= -0.5)
+    if (run.Parts.size() == 1) // parts side by side dropped theirs in ScanParts
     {
-      const vtkIdType removed =
-        run.Assembler.RemoveLast(static_cast<vtkIdType>(std::llround(-leftover)));
-      if (run.Mask)
-      {
-        ClearLastVoxels(run.Mask, removed);
-      }
+      run.First().DropAheadPoints(
+        this->Method == METHOD_ERROR_DIFFUSION || this->Method == METHOD_RELAXED_ERROR_DIFFUSION);
     }
-    run.Points->SetPoints(run.Assembler.End());
-    run.Points->SetVerts(run.Assembler.MakeVertices(run.Points->GetNumberOfPoints()));
+    points->SetPoints(run.Assembler.End());
+    points->SetVerts(run.Assembler.MakeVertices(points->GetNumberOfPoints()));
   }
-  output->ShallowCopy(run.Points);
+  output->ShallowCopy(points);
   this->WarnIfEmpty(output->GetNumberOfPoints(), expected);
 
   vtkFieldData* fd = output->GetFieldData();
@@ -1114,8 +1451,7 @@ int vtkErrorDiffusionSampler::Execute(
   // filter again on every update only to repeat the error.
   const auto fail = [&]() {
     run.Running = false;
-    run.Points = nullptr;
-    run.Mask = nullptr;
+    run.EndRun();
     run.Assembler.Recycle(nullptr);
     output->Initialize();
     mask->Initialize();
@@ -1162,8 +1498,7 @@ int vtkErrorDiffusionSampler::Execute(
   }
   this->FinishOutput(input.Get(), output, mask);
   run.Running = false;
-  run.Points = nullptr;
-  run.Mask = nullptr;
+  run.EndRun();
   run.Assembler.Recycle(nullptr); // what this run did not reuse
   request->Remove(continueKey);
   this->UpdateProgress(1.0);
@@ -1194,4 +1529,6 @@ void vtkErrorDiffusionSampler::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "UseWorkerThread: " << this->UseWorkerThread << "\n";
   os << indent << "NumberOfSlabs: " << this->NumberOfSlabs << "\n";
   os << indent << "OverlapLayers: " << this->OverlapLayers << "\n";
+  os << indent << "PartLayers: " << this->PartLayers << "\n";
+  os << indent << "PartVoxels: " << this->PartVoxels << "\n";
 }

@@ -58,10 +58,7 @@
  * Pieces and streaming. A request for piece p of n samples the p-th of n
  * z-slabs of the whole extent (full layers, so the scan runs as for the whole
  * volume): it first scans up to OverlapLayers layers above its slab to settle
- * the error pattern it enters with, and its own count is exact. The
- * relaxation sees the last MaximumRadius of them below the slab (as context:
- * no sample moves into or out of them, see vtkBlueNoiseRelaxation::Begin),
- * so the slab's first layers are not drawn into the emptiness below. The density
+ * the error pattern it enters with, and its own count is exact. The density
  * scale and range come from the whole volume (the statistics pass reads it;
  * vtkPErrorDiffusionSampler reduces the pieces' statistics instead). With
  * NumberOfSlabs > 1 the input is requested in that many z-slabs, one after
@@ -76,13 +73,28 @@
  * of its own, from the parsed header, instead). The points and the mask (GenerateMask) still
  * grow with the output.
  *
- * Time O(voxels); memory besides the input and the output a few layers. The
- * scan runs on a worker thread while this thread relaxes and builds the
- * points, the densities mapped and the relaxed layers' points built by
- * whichever of the two has time (UseWorkerThread, when more than one thread
- * is allowed);
- * the pass over the values that a point budget or an unset scalar range needs
- * before the scan runs on as many threads as are allowed. Progress is reported per layer (for
+ * Threads. A volume of two parts or more (PartLayers, PartVoxels) sampled
+ * by error diffusion (relaxed or not) or white noise is cut into z-parts
+ * that are sampled side by side, a round of layers at a time, the lowest
+ * parts not done first, each on one thread: the lowest part not written yet
+ * adds its points to the output as it scans, the others hold theirs
+ * compacted until their turn. Each part but the first scans OverlapLayers
+ * layers before its own, as a piece does, and its relaxation sees the last
+ * MaximumRadius of them below its first layer (vtkBlueNoiseRelaxation's
+ * context) but moves nothing into them. The parts depend on the volume
+ * only, so the output does not depend on the threads; the seams between
+ * them cost little (TestErrorDiffusionSamplerParts measures them). A volume
+ * of one part is scanned on a worker thread while this thread relaxes and
+ * builds the points, the densities mapped and the relaxed layers' points
+ * built by whichever of the two has time (UseWorkerThread, when more than
+ * one thread is allowed). The pass over the values that a point budget or
+ * an unset scalar range needs before the scan runs on as many threads as
+ * are allowed.
+ *
+ * Time O(voxels); memory besides the input and the output a few layers (per
+ * part side by side), and the compacted samples of the parts that wait for
+ * their turn to write (12 bytes a point and 8 a row of voxels), kept for the
+ * next execution. Progress is reported per layer (for
  * METHOD_POISSON_DISK and METHOD_SAMPLE_ELIMINATION every so many voxels or
  * candidates the kernel visits); abort is honored between layers (there, at
  * the kernel's reports) and leaves an empty output.
@@ -354,11 +366,41 @@ public:
 
   ///@{
   /**
-   * For piece p > 0 of several: layers above the piece scanned first to settle
-   * the error pattern it enters with. In [0, 4096]. Default 16.
+   * For piece p > 0 of several, and for each z-part but the first (see
+   * PartLayers): layers before it scanned first to settle the error pattern
+   * it enters with. In [0, 4096]. Default 16.
    */
   vtkSetClampMacro(OverlapLayers, int, 0, 4096);
   vtkGetMacro(OverlapLayers, int);
+  ///@}
+
+  ///@{
+  /**
+   * The size of the z-parts the error-diffusion methods and white noise
+   * sample side by side, one per thread: each
+   * part has at least PartLayers layers (in [2, 65536], default 64) and
+   * PartVoxels voxels (at least 256, default 2^22), so a volume smaller
+   * than two parts is sampled in one. The parts depend on the volume alone,
+   * never on the threads, so the output does not either; but it does depend
+   * on these two. Each part but the first scans OverlapLayers layers before
+   * its own first, as a piece does (see the class comment).
+   */
+  vtkSetClampMacro(PartLayers, int, 2, 65536);
+  vtkGetMacro(PartLayers, int);
+  vtkSetClampMacro(PartVoxels, vtkIdType, 256, VTK_ID_MAX);
+  vtkGetMacro(PartVoxels, vtkIdType);
+  ///@}
+
+  ///@{
+  /**
+   * The z-parts of the last execution (see PartLayers): how many, and part
+   * i's layers (global z): range[0] the first it scans (its overlap
+   * included), range[1] and range[2] the first and the last it samples.
+   * Empty (0, and a range of -1) before the first execution and for an i out
+   * of range.
+   */
+  int GetNumberOfParts();
+  void GetPartRange(int i, int range[3]);
   ///@}
 
   /// Output port 1: the mask image.
@@ -411,6 +453,8 @@ protected:
   bool UseWorkerThread = true;
   int NumberOfSlabs = 1;
   int OverlapLayers = 16;
+  int PartLayers = 64;
+  vtkIdType PartVoxels = vtkIdType(1) << 22;
 
 private:
   vtkErrorDiffusionSampler(const vtkErrorDiffusionSampler&) = delete;
@@ -425,6 +469,7 @@ private:
   int ValueMapping() const;
   bool ValidateProperties();
   void PlanRun(const int whole[6], int piece, int pieces);
+  void PlanParts(bool atOnce);
   bool StartRun(vtkInformation* outInfo, vtkInformationVector** inputVector);
   bool RunCoveredSteps(vtkImageData* input, vtkInformationVector** inputVector);
   bool CollectStatistics(vtkImageData* input, vtkInformationVector** inputVector);
@@ -432,6 +477,7 @@ private:
   bool SampleSlab(vtkImageData* input, vtkInformationVector** inputVector);
   bool StartAssembly(vtkImageData* input);
   bool ScanSlab(vtkImageData* input, vtkDataArray* array);
+  bool ScanParts(vtkImageData* input, vtkDataArray* array);
   bool SampleWhole(vtkImageData* input, vtkDataArray* array);
   void FinishOutput(vtkImageData* input, vtkPolyData* output, vtkImageData* mask);
   void WarnIfEmpty(vtkIdType points, double expected);

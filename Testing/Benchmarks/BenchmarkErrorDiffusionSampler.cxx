@@ -31,6 +31,7 @@
 #include <atomic>
 #include <chrono>
 #include <cstdint>
+#include <string>
 #include <thread>
 #include <vector>
 
@@ -157,13 +158,14 @@ vtkIdType TightScan(const T* values, int n, double scale, unsigned char* b)
 
 // A constant cube of `value` in an array of type T.
 template <typename ArrayT>
-vtkSmartPointer<vtkImageData> Cube(int n, double value)
+vtkSmartPointer<vtkImageData> Cube(int n, double value, int layers = 0)
 {
+  layers = layers > 0 ? layers : n;
   auto image = vtkSmartPointer<vtkImageData>::New();
-  image->SetDimensions(n, n, n);
+  image->SetDimensions(n, n, layers);
   auto values = vtkSmartPointer<ArrayT>::New();
   values->SetName("values");
-  values->SetNumberOfValues(static_cast<vtkIdType>(n) * n * n);
+  values->SetNumberOfValues(static_cast<vtkIdType>(n) * n * layers);
   values->Fill(value);
   image->GetPointData()->SetScalars(values);
   return image;
@@ -267,6 +269,106 @@ void BM_Filter(benchmark::State& state)
     static_cast<double>(n) * n * n, benchmark::Counter::kIsIterationInvariantRate);
   state.counters["x_tight"] = plain / best;
   state.counters["points"] = static_cast<double>(sampler->GetOutput()->GetNumberOfPoints());
+}
+
+// The fastest of `runs` executions of the filter on one thread (no worker
+// thread), in seconds, the first one untimed; in one part unless `parts`.
+double OneThreadSeconds(vtkImageData* image, double g, int method, bool parts, int runs,
+  vtkErrorDiffusionSampler* plan = nullptr)
+{
+  vtkNew<vtkErrorDiffusionSampler> sampler;
+  vtkErrorDiffusionSampler* s = plan ? plan : sampler.Get();
+  s->SetInputData(image);
+  s->SetDensityMappingToIdentity();
+  s->UseNumberOfPointsOff();
+  s->SetDensityScale(g);
+  s->SetUseWorkerThread(false);
+  s->SetMethod(method);
+  if (method == vtkErrorDiffusionSampler::METHOD_ERROR_DIFFUSION)
+  {
+    s->SetParameterSet(vtkErrorDiffusionSampler::PARAMETERS_PAPER);
+  }
+  if (!parts)
+  {
+    s->SetPartLayers(65536);
+  }
+  s->Update();
+  double best = 1e30;
+  for (int r = 0; r < runs; ++r)
+  {
+    s->Modified();
+    const auto start = Clock::now();
+    s->Update();
+    best = std::min(best, std::chrono::duration<double>(Clock::now() - start).count());
+  }
+  return best;
+}
+
+// The speed-up of the z-parts on N threads, projected from the work of each
+// part measured alone on one thread: each part's scanned layers (its overlap
+// included) sampled as a volume of their own in one part, which also relaxes
+// and emits the overlap (so the projection errs on the slow side). The
+// rounds are replayed as the filter runs them: each round the lowest N parts
+// not done scan up to `round` layers each, and the round lasts as long as its
+// longest share. Speed-up = the whole volume in one part on one thread / the
+// replayed wall time. Counters: parts, overlap (scanned layers / sampled
+// layers) and x_N for N = 2, 4, 8, 16. Threads are not used: the machine
+// measuring need not have N cores.
+// range(0): edge; range(1): g in 1/255; range(2): the Method.
+void BM_PartsProjection(benchmark::State& state)
+{
+  const int n = static_cast<int>(state.range(0));
+  const double g = static_cast<double>(state.range(1)) / 255.0;
+  const int method = static_cast<int>(state.range(2));
+  auto image = Cube<vtkUnsignedCharArray>(n, 1.0);
+  for (auto _ : state)
+  {
+    vtkNew<vtkErrorDiffusionSampler> plan;
+    OneThreadSeconds(image, g, method, true, 0, plan);
+    const double whole = OneThreadSeconds(image, g, method, false, 2);
+    const int parts = plan->GetNumberOfParts();
+    std::vector<int> layers(static_cast<size_t>(parts));
+    std::vector<double> perLayer(static_cast<size_t>(parts));
+    double scanned = 0.0;
+    for (int p = 0; p < parts; ++p)
+    {
+      int range[3];
+      plan->GetPartRange(p, range);
+      layers[p] = range[2] - range[0] + 1;
+      scanned += layers[p];
+      auto part = Cube<vtkUnsignedCharArray>(n, 1.0, layers[p]);
+      perLayer[p] = OneThreadSeconds(part, g, method, false, 2) / layers[p];
+    }
+    const int round = static_cast<int>(std::max<vtkIdType>(2, (vtkIdType(1) << 22) / (vtkIdType(n) * n)));
+    for (const int threads : { 2, 4, 8, 16 })
+    {
+      std::vector<int> left = layers;
+      double wall = 0.0;
+      for (int first = 0; first < parts;)
+      {
+        double longest = 0.0;
+        for (int p = first, active = 0; p < parts && active < threads; ++p)
+        {
+          if (left[p] > 0)
+          {
+            const int now = std::min(round, left[p]);
+            longest = std::max(longest, now * perLayer[p]);
+            left[p] -= now;
+            ++active;
+          }
+        }
+        wall += longest;
+        while (first < parts && left[first] == 0)
+        {
+          ++first;
+        }
+      }
+      state.counters["x_" + std::to_string(threads)] = whole / wall;
+    }
+    state.counters["parts"] = parts;
+    state.counters["overlap"] = scanned / n;
+    state.counters["one_part_s"] = whole;
+  }
 }
 
 // The tight loop alone: the baseline of pvpython_update_pipeline.py.
@@ -386,4 +488,10 @@ BENCHMARK(BM_Filter)
   ->UseRealTime() // two threads: CPU time of the caller alone would flatter
   ->ComputeStatistics("min", Fastest)
   ->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_PartsProjection)
+  ->ArgNames({ "L", "g255", "method" })
+  ->ArgsProduct({ { 512 }, { 8, 127 }, { 2, 0 } })
+  ->ArgsProduct({ { 1024 }, { 8 }, { 2, 0 } })
+  ->Iterations(1)
+  ->Unit(benchmark::kSecond);
 BENCHMARK_MAIN();

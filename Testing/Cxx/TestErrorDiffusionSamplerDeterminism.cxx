@@ -36,20 +36,6 @@ using namespace bluenoise_test;
 
 namespace
 {
-bool SamePoints(vtkPolyData* a, vtkPolyData* b)
-{
-  const vtkIdType n = a->GetNumberOfPoints();
-  if (n != b->GetNumberOfPoints())
-  {
-    return false;
-  }
-  auto* pa = a->GetPoints()->GetData();
-  auto* pb = b->GetPoints()->GetData();
-  return n == 0 ||
-    std::memcmp(pa->GetVoidPointer(0), pb->GetVoidPointer(0),
-      static_cast<size_t>(n) * 3 * pa->GetDataTypeSize()) == 0;
-}
-
 std::string Exact(double x)
 {
   std::ostringstream out;

@@ -8,7 +8,6 @@
 // for it, and the next Update samples again.
 #include "SamplerTestUtilities.h"
 #include "vtkCommand.h"
-#include "vtkVersionMacros.h"
 
 #include <algorithm>
 #include <iostream>
@@ -28,12 +27,7 @@ public:
     this->Values.push_back(p);
     if (this->AbortAt >= 0.0 && p >= this->AbortAt)
     {
-      auto* algorithm = static_cast<vtkAlgorithm*>(caller);
-#if VTK_VERSION_NUMBER >= VTK_VERSION_CHECK(9, 2, 20220831)
-      algorithm->SetAbortExecuteAndUpdateTime();
-#else
-      algorithm->SetAbortExecute(1);
-#endif
+      bluenoise_test::Abort(static_cast<vtkAlgorithm*>(caller));
     }
   }
   std::vector<double> Values;

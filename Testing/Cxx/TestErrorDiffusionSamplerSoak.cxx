@@ -19,7 +19,6 @@
 #include "vtkExecutive.h"
 #include "vtkPointData.h"
 #include "vtkRTAnalyticSource.h"
-#include "vtkVersionMacros.h"
 
 #include <algorithm>
 #include <chrono>
@@ -45,12 +44,7 @@ public:
     if (this->AbortAt > 0.0 && !this->Fired && p >= this->AbortAt && p < 1.0)
     {
       this->Fired = true;
-      auto* algorithm = static_cast<vtkAlgorithm*>(caller);
-#if VTK_VERSION_NUMBER >= VTK_VERSION_CHECK(9, 2, 20220831)
-      algorithm->SetAbortExecuteAndUpdateTime();
-#else
-      algorithm->SetAbortExecute(1);
-#endif
+      bluenoise_test::Abort(static_cast<vtkAlgorithm*>(caller));
     }
   }
   double AbortAt = -1.0;

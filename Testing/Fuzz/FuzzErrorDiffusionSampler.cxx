@@ -263,6 +263,9 @@ void Configure(FuzzedDataProvider& fdp, vtkErrorDiffusionSampler* sampler)
   sampler->SetUseWorkerThread(fdp.ConsumeBool());
   sampler->SetNumberOfSlabs(fdp.ConsumeIntegralInRange<int>(0, 9));
   sampler->SetOverlapLayers(fdp.ConsumeIntegralInRange<int>(-1, 8));
+  // Parts of a few layers and voxels, so that small volumes are cut too.
+  sampler->SetPartLayers(fdp.ConsumeIntegralInRange<int>(0, 16));
+  sampler->SetPartVoxels(fdp.ConsumeIntegralInRange<vtkIdType>(0, 8192));
 }
 
 /// The promises of an update that reported no error.

@@ -1,0 +1,272 @@
+// SPDX-FileCopyrightText: Copyright (c) 2025-2026 the BlueNoiseSampling contributors
+// SPDX-License-Identifier: BSD-3-Clause
+// The z-parts the scanning methods sample side by side (PartLayers,
+// PartVoxels): the output does not depend on the threads or the slabs; the
+// count stays exact (within max(2, 0.05 %)); the 16 layers around each seam
+// hold their expected count within 2 %; the mask matches the points and the
+// attributes their voxels (numeric and string arrays); both the paper's
+// method and the relaxed one; an abort between rounds leaves an empty output.
+#include "SamplerTestUtilities.h"
+#include "vtkBlueNoiseSpectrum.h"
+#include "vtkCommand.h"
+#include "vtkDataArray.h"
+#include "vtkIntArray.h"
+#include "vtkPointData.h"
+#include "vtkPoints.h"
+#include "vtkStringArray.h"
+#include "vtkTable.h"
+
+#include <cmath>
+#include <cstdlib>
+#include <iostream>
+#include <string>
+#include <vector>
+
+using namespace bluenoise_test;
+
+namespace
+{
+constexpr int NX = 64, NY = 48, NZ = 320, PartLayers = 32; // 10 parts
+
+float Density(int i, int j, int k)
+{
+  return 0.02f + 0.12f * (0.5f + 0.5f * std::sin(k / 23.0f)) * (i + j) / float(NX + NY);
+}
+
+// The mean anisotropy (dB, below half the grid's frequencies) and L(g) of the
+// points of a constant cube of edge n, on the cube's own grid.
+void Spectrum(vtkPolyData* points, int n, double& anisotropy, double& low)
+{
+  vtkNew<vtkBlueNoiseSpectrum> spectrum;
+  spectrum->SetUseInputGrid(false);
+  spectrum->SetGridDimensions(n, n, n);
+  spectrum->UseGridBoundsOn();
+  spectrum->SetGridBounds(0, n - 1, 0, n - 1, 0, n - 1);
+  spectrum->SetInputData(points);
+  spectrum->Update();
+  vtkTable* table = spectrum->GetOutput();
+  vtkDataArray* column = vtkDataArray::SafeDownCast(table->GetColumnByName("AnisotropyDB"));
+  anisotropy = 0.0;
+  for (int f = 0; f < n / 2; ++f)
+  {
+    anisotropy += column->GetTuple1(f) / (n / 2);
+  }
+  low = table->GetFieldData()->GetArray("LowFrequencyRatio")->GetTuple1(0);
+}
+
+class AbortObserver : public vtkCommand
+{
+public:
+  static AbortObserver* New() { return new AbortObserver; }
+  void Execute(vtkObject* caller, unsigned long, void* data) override
+  {
+    if (*static_cast<double*>(data) >= 0.3)
+    {
+      bluenoise_test::Abort(static_cast<vtkAlgorithm*>(caller));
+    }
+  }
+};
+}
+
+int main()
+{
+  auto image = MakeVolume(NX, NY, NZ, Density);
+  std::vector<double> layerSums(NZ, 0.0);
+  for (int k = 0; k < NZ; ++k)
+  {
+    for (int j = 0; j < NY; ++j)
+    {
+      for (int i = 0; i < NX; ++i)
+      {
+        layerSums[k] += Density(i, j, k);
+      }
+    }
+  }
+  double expected = 0.0;
+  for (double sum : layerSums)
+  {
+    expected += sum;
+  }
+  const auto run = [&](const char* threads, int slabs, int partLayers, int method) {
+    setenv("VTK_SMP_MAX_THREADS", threads, 1);
+    auto points = Sample(image, [&](vtkErrorDiffusionSampler* s) {
+      s->SetMethod(method);
+      s->SetPartLayers(partLayers);
+      s->SetPartVoxels(65536);
+      s->SetNumberOfSlabs(slabs);
+      s->SetSeed(7);
+    });
+    unsetenv("VTK_SMP_MAX_THREADS");
+    return points;
+  };
+
+  // Both error-diffusion methods: the paper's, and the default (relaxed), whose
+  // relaxation runs in each part.
+  const int ed = vtkErrorDiffusionSampler::METHOD_ERROR_DIFFUSION;
+  const int relaxed = vtkErrorDiffusionSampler::METHOD_RELAXED_ERROR_DIFFUSION;
+  vtkSmartPointer<vtkPolyData> one;
+  for (const int method : { relaxed, ed })
+  {
+    const std::string name = method == ed ? "paper's method: " : "default method: ";
+    one = run("1", 1, PartLayers, method);
+    auto four = run("4", 1, PartLayers, method);
+    auto streamed = run("3", 7, PartLayers, method);
+    auto whole = run("4", 1, 65536, method);
+    Check(SamePoints(one, four), name + "1 and 4 threads: the same points (" +
+        Str(one->GetNumberOfPoints()) + ", " + Str(four->GetNumberOfPoints()) + ")");
+    Check(SamePoints(one, streamed), name + "in 7 slabs: the same points as in one go");
+    Check(!SamePoints(one, whole), name + "10 parts sample otherwise than one part");
+    const double n = static_cast<double>(one->GetNumberOfPoints());
+    Check(std::abs(n - expected) <= std::max(2.0, 0.0005 * expected),
+      name + "10 parts: " + Str(one->GetNumberOfPoints()) + " points, expected " + Str(expected));
+
+    // The 16 layers around each seam.
+    std::vector<vtkIdType> perLayer(NZ, 0);
+    for (vtkIdType p = 0; p < one->GetNumberOfPoints(); ++p)
+    {
+      ++perLayer[static_cast<size_t>(std::lround(one->GetPoint(p)[2]))];
+    }
+    for (int seam = PartLayers; seam < NZ; seam += PartLayers)
+    {
+      double got = 0.0, want = 0.0;
+      for (int k = seam - 8; k < seam + 8; ++k)
+      {
+        got += perLayer[k];
+        want += layerSums[k];
+      }
+      Check(std::abs(got / want - 1.0) <= 0.02,
+        name + "seam at z = " + Str(seam) + ": " + Str(got) + " points, expected " + Str(want));
+    }
+  }
+
+  // The seams cost little blue noise: on a constant cube of 96^3 in parts of
+  // 32 layers, the whole set's L(g) within 2 % and its mean anisotropy within
+  // 0.5 dB of one part's, each averaged over 2 seeds.
+  {
+    const int n = 96;
+    auto cube = MakeVolume(n, n, n, [](int, int, int) { return 8.0f / 255.0f; });
+    for (const int method : { relaxed, ed })
+    {
+      const std::string name = method == ed ? "paper's method: " : "default method: ";
+      double figures[2][2] = { { 0.0, 0.0 }, { 0.0, 0.0 } }; // [parts][anisotropy, L]
+      for (int parts = 0; parts < 2; ++parts)
+      {
+        for (int seed = 1; seed <= 2; ++seed)
+        {
+          auto points = Sample(cube, [&](vtkErrorDiffusionSampler* s) {
+            s->SetMethod(method);
+            s->SetPartLayers(parts ? 32 : 65536);
+            s->SetPartVoxels(65536);
+            s->SetSeed(seed);
+          });
+          double anisotropy = 0.0, low = 0.0;
+          Spectrum(points, n, anisotropy, low);
+          figures[parts][0] += anisotropy / 2;
+          figures[parts][1] += low / 2;
+        }
+      }
+      std::cout << name << "mean anisotropy " << figures[1][0] << " dB in 3 parts, "
+                << figures[0][0] << " dB in one; L " << figures[1][1] << ", " << figures[0][1]
+                << "\n";
+      Check(std::abs(figures[1][0] - figures[0][0]) <= 0.5,
+        name + "3 parts: mean anisotropy " + Str(figures[1][0]) + " dB, one part " +
+          Str(figures[0][0]) + " dB");
+      Check(std::abs(figures[1][1] / figures[0][1] - 1.0) <= 0.02,
+        name + "3 parts: L " + Str(figures[1][1]) + ", one part " + Str(figures[0][1]));
+    }
+  }
+
+  // A sampler of the error-diffusion method in parts, not run yet.
+  const auto inParts = [&]() {
+    auto sampler = vtkSmartPointer<vtkErrorDiffusionSampler>::New();
+    sampler->SetInputData(image);
+    sampler->SetDensityMappingToIdentity();
+    sampler->UseNumberOfPointsOff();
+    sampler->SetMethod(ed);
+    sampler->SetPartLayers(PartLayers);
+    sampler->SetPartVoxels(65536);
+    sampler->SetSeed(7);
+    return sampler;
+  };
+
+  // The mask of a run in parts marks the points' voxels.
+  {
+    auto sampler = inParts();
+    sampler->GenerateMaskOn();
+    sampler->Update();
+    vtkDataArray* mask = sampler->GetMaskOutput()->GetPointData()->GetScalars();
+    vtkPolyData* points = sampler->GetOutput();
+    bool marked = mask != nullptr;
+    vtkIdType ones = 0;
+    for (vtkIdType v = 0; marked && v < mask->GetNumberOfTuples(); ++v)
+    {
+      ones += mask->GetTuple1(v) != 0.0;
+    }
+    for (vtkIdType p = 0; marked && p < points->GetNumberOfPoints(); ++p)
+    {
+      const double* x = points->GetPoint(p);
+      const vtkIdType v = (std::lround(x[2]) * NY + std::lround(x[1])) * NX + std::lround(x[0]);
+      marked = mask->GetTuple1(v) != 0.0;
+    }
+    Check(marked && ones == points->GetNumberOfPoints() && SamePoints(points, one),
+      "the mask marks the " + Str(points->GetNumberOfPoints()) + " points (" + Str(ones) +
+        " ones) and the points are those without a mask");
+  }
+
+  // The attributes in parts: a numeric and a string array carried from the
+  // voxels, each naming the point's layer.
+  {
+    auto labelled = MakeVolume(NX, NY, NZ, Density);
+    vtkNew<vtkIntArray> layers;
+    layers->SetName("layer");
+    vtkNew<vtkStringArray> names;
+    names->SetName("name");
+    layers->SetNumberOfValues(labelled->GetNumberOfPoints());
+    names->SetNumberOfValues(labelled->GetNumberOfPoints());
+    for (vtkIdType v = 0; v < labelled->GetNumberOfPoints(); ++v)
+    {
+      const int k = static_cast<int>(v / (NX * NY));
+      layers->SetValue(v, k);
+      names->SetValue(v, "z" + std::to_string(k));
+    }
+    labelled->GetPointData()->AddArray(layers);
+    labelled->GetPointData()->AddArray(names);
+    setenv("VTK_SMP_MAX_THREADS", "4", 1);
+    auto points = Sample(labelled, [&](vtkErrorDiffusionSampler* s) {
+      s->SetMethod(vtkErrorDiffusionSampler::METHOD_ERROR_DIFFUSION);
+      s->SetPartLayers(PartLayers);
+      s->SetPartVoxels(65536);
+      s->SetSeed(7);
+    });
+    unsetenv("VTK_SMP_MAX_THREADS");
+    auto* layer = vtkIntArray::SafeDownCast(points->GetPointData()->GetArray("layer"));
+    auto* name = vtkStringArray::SafeDownCast(points->GetPointData()->GetAbstractArray("name"));
+    bool carried = layer && name && SamePoints(points, one);
+    for (vtkIdType p = 0; carried && p < points->GetNumberOfPoints(); ++p)
+    {
+      const int k = static_cast<int>(std::lround(points->GetPoint(p)[2]));
+      carried = layer->GetValue(p) == k && name->GetValue(p) == "z" + std::to_string(k);
+    }
+    Check(carried, "in parts, every point carries its own voxel's numeric and string values");
+  }
+
+  // White noise in parts: the same whatever the threads.
+  const int white = vtkErrorDiffusionSampler::METHOD_WHITE_NOISE;
+  Check(SamePoints(run("1", 1, PartLayers, white), run("4", 3, PartLayers, white)),
+    "white noise in parts: the same points with 1 and 4 threads, in one go and in 3 slabs");
+
+  // An abort between rounds: an empty output, and the next update samples.
+  {
+    auto sampler = inParts();
+    vtkNew<AbortObserver> abort;
+    const unsigned long tag = sampler->AddObserver(vtkCommand::ProgressEvent, abort);
+    sampler->Update();
+    Check(sampler->GetOutput()->GetNumberOfPoints() == 0, "aborted in parts: an empty output");
+    sampler->RemoveObserver(tag);
+    sampler->SetAbortExecute(0);
+    sampler->Modified();
+    sampler->Update();
+    Check(SamePoints(sampler->GetOutput(), one), "after the abort, the same points as before");
+  }
+  return Summary("TestErrorDiffusionSamplerParts");
+}
