@@ -222,6 +222,13 @@ vtkErrorDiffusionScan::LevelParameters vtkErrorDiffusionScan::ParametersOf(float
 }
 
 //------------------------------------------------------------------------------
+void vtkErrorDiffusionScan::ReleaseLayerBuffers()
+{
+  std::vector<float>().swap(this->Current);
+  std::vector<float>().swap(this->Next);
+}
+
+//------------------------------------------------------------------------------
 void vtkErrorDiffusionScan::EndLayer()
 {
   std::swap(this->Current, this->Next);

@@ -205,6 +205,9 @@ public:
    */
   double GetCarriedError() const;
 
+  /// Frees the error buffers of a run that is over (Begin makes them again).
+  void ReleaseLayerBuffers();
+
   /**
    * Run the process translated by the constant `charge` on a box at constant
    * density g (vtkErrorDiffusionChargeCurve says which box) and return the

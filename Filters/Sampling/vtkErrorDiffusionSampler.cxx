@@ -155,8 +155,10 @@ public:
   // relaxation. A run in one part adds each final layer to the output at
   // once; of parts scanned side by side only the writer does, the others
   // keep their final layers compacted until they are the writer (see
-  // ScanParts). Parts live from run to run: the first one's kernel keeps the
-  // charge curves it calibrated, and all keep the memory they held layers in.
+  // ScanParts). Parts live from run to run, the first one's kernel with the
+  // charge curves it calibrated; a part's buffers (its kernel's error, its
+  // relaxation's layers, its runner's slots) exist only from its first round
+  // to its last, so parts side by side hold the memory of one part a thread.
   struct Part : public vtkErrorDiffusionLayerBacklog::Sink
   {
     using Samples = vtkErrorDiffusionPointAssembler::LayerSamples;
@@ -172,6 +174,7 @@ public:
     size_t Count = 0;
     bool Direct = true;  // the writer: its layers go straight into the output
     bool Ended = false;  // its last layer was scanned in the round just run
+    bool Started = false; // its buffers are made (Start)
     std::vector<vtkIdType> Scratch; // the compaction's buffer
 
     // A final layer of samples: into the points (or held, see above), and
@@ -241,6 +244,35 @@ public:
       return std::max(this->ScanFirst, this->First - vtkBlueNoiseRelaxation::MaximumRadius);
     }
 
+    // Before its first round: the kernel a copy of the run's first kernel as
+    // it began (its settings and charge curves), and the relaxation begun.
+    void Start(const vtkErrorDiffusionKernel& begun, std::uint64_t seed)
+    {
+      vtkInternals& run = *this->Run;
+      this->Kernel = begun;
+      this->Kernel.Begin(run.NX(), run.NY(), this->ScanFirst);
+      this->StartRelaxation(seed);
+    }
+
+    void StartRelaxation(std::uint64_t seed)
+    {
+      vtkInternals& run = *this->Run;
+      if (run.Relaxing)
+      {
+        this->Relaxation.Begin(run.NX(), run.NY(), this->RelaxFirst(), seed, this->First);
+      }
+      this->Backlog.SetSink(this);
+      this->Started = true;
+    }
+
+    // After its last round (and DropAheadPoints, which reads the kernel's error).
+    void Release()
+    {
+      this->Kernel.ReleaseLayerBuffers();
+      this->Relaxation = vtkBlueNoiseRelaxation();
+      this->Runner.ReleaseBuffers();
+    }
+
     // The points held.
     vtkIdType HeldPoints() const
     {
@@ -306,6 +338,9 @@ public:
   bool Cells = false;                       // the sites are the input's cells
   std::vector<Step> Steps;
   std::vector<std::unique_ptr<Part>> Parts; // at least one
+  // The first part's kernel as it began the run, without its buffers: what
+  // the other parts start from (Part::Start).
+  vtkErrorDiffusionKernel Begun;
   size_t Current = 0;
   bool Running = false;
   bool Executing = false; // inside RequestData (see RequestData)
@@ -339,7 +374,11 @@ public:
     {
       part->Backlog.Clear();
       part->Count = 0;
+      std::vector<Part::Samples>().swap(part->Held);
+      std::vector<vtkIdType>().swap(part->Scratch);
+      part->Release();
     }
+    this->Begun = vtkErrorDiffusionKernel();
     this->Points = nullptr;
     this->Mask = nullptr;
   }
@@ -780,8 +819,8 @@ bool vtkErrorDiffusionSampler::StartRun(vtkInformation*, vtkInformationVector**)
   }
   run.Statistics.Reset();
   // The first part's kernel is kept from run to run with the charge curves
-  // it used last (Begin resets the rest); the other parts start from it and
-  // share its curves.
+  // it used last (Begin resets the rest); the other parts start from it as
+  // it began (Part::Start) and share its curves.
   vtkErrorDiffusionKernel& kernel = run.First().Kernel;
   kernel.SetParameters(table);
   kernel.SetModulationScale(this->ModulationScale);
@@ -791,16 +830,17 @@ bool vtkErrorDiffusionSampler::StartRun(vtkInformation*, vtkInformationVector**)
       : vtkErrorDiffusionKernel::METHOD_ERROR_DIFFUSION);
   kernel.SetWarmUpLayers(this->WarmUpLayers);
   kernel.Begin(run.NX(), run.NY(), run.ScanFirst);
+  if (run.Parts.size() > 1)
+  {
+    run.Begun = kernel;
+    run.Begun.ReleaseLayerBuffers();
+  }
   for (auto& part : run.Parts)
   {
-    if (part.get() != &run.First())
-    {
-      part->Kernel = kernel;
-      part->Kernel.Begin(run.NX(), run.NY(), part->ScanFirst);
-    }
     part->Count = 0;
     part->Direct = true;
     part->Ended = false;
+    part->Started = false;
   }
   run.Points = vtkSmartPointer<vtkPolyData>::New();
   run.Mask = nullptr;
@@ -900,15 +940,7 @@ bool vtkErrorDiffusionSampler::StartAssembly(vtkImageData* input)
   run.Assembler.Begin(input, run.Sampled, run.Points->GetPointData(),
     this->OutputPointsPrecision == DOUBLE_PRECISION ? VTK_DOUBLE : VTK_FLOAT);
   run.Assembler.SetJitter(this->Jitter, static_cast<std::uint64_t>(this->Seed));
-  if (run.Relaxing)
-  {
-    for (auto& part : run.Parts)
-    {
-      part->Relaxation.Begin(run.NX(), run.NY(), part->RelaxFirst(),
-        static_cast<std::uint64_t>(this->Seed), part->First);
-      part->Backlog.SetSink(part.get());
-    }
-  }
+  run.First().StartRelaxation(static_cast<std::uint64_t>(this->Seed)); // the others: Part::Start
   for (const std::string& name : run.Assembler.GetSkippedArrays())
   {
     vtkWarningMacro("The point array '" << name << "' does not have one tuple per voxel: it is "
@@ -1013,6 +1045,16 @@ private:
 };
 
 //------------------------------------------------------------------------------
+// Whether a scan of `layers` layers runs on a worker thread beside the
+// calling one: when allowed and there is enough to overlap.
+bool vtkErrorDiffusionSampler::WorkerThreadFor(int layers) const
+{
+  return this->UseWorkerThread && layers > 1 &&
+    this->Internals->LayerSize() * layers >= MinimumVoxelsForWorkerThread &&
+    vtkBlueNoiseThreads::Available() > 1;
+}
+
+//------------------------------------------------------------------------------
 // One sampling step of a scanning method: the layers of one slab through the
 // kernel on the runner, in one part or in parts side by side.
 bool vtkErrorDiffusionSampler::ScanSlab(vtkImageData* input, vtkDataArray* array)
@@ -1026,9 +1068,7 @@ bool vtkErrorDiffusionSampler::ScanSlab(vtkImageData* input, vtkDataArray* array
   vtkInternals::Part& part = run.First();
   const int layers = step.Last - step.First + 1;
   vtkErrorDiffusionLayerRunner runner;
-  runner.SetThreaded(this->UseWorkerThread && layers > 1 &&
-    run.LayerSize() * layers >= MinimumVoxelsForWorkerThread &&
-    vtkBlueNoiseThreads::Available() > 1);
+  runner.SetThreaded(this->WorkerThreadFor(layers));
   vtkInternals::SlabScan stages(this, part, input, array, step.First, step.Last, true);
   if (!runner.Run(part.Kernel, stages, run.NX(), run.NY(), layers, step.Last < run.Sampled[5]))
   {
@@ -1106,6 +1146,13 @@ bool vtkErrorDiffusionSampler::ScanParts(vtkImageData* input, vtkDataArray* arra
     {
       break;
     }
+    for (Share* task : tasks)
+    {
+      if (!task->Part->Started)
+      {
+        task->Part->Start(run.Begun, static_cast<std::uint64_t>(this->Seed));
+      }
+    }
     vtkBlueNoiseThreads::ForEach(static_cast<int>(tasks.size()), [&](int i) {
       Share& share = *tasks[static_cast<size_t>(i)];
       vtkInternals::Part& part = *share.Part;
@@ -1115,8 +1162,13 @@ bool vtkErrorDiffusionSampler::ScanParts(vtkImageData* input, vtkDataArray* arra
         part.WriteHeld();
       }
       // A part's first round takes its overlap too: the rounds of parts side by
-      // side then end together.
-      const int to = std::min(share.Last, std::max(share.Next, part.First) + round - 1);
+      // side then end together. A part alone (a slab of a streamed volume,
+      // the last part) scans the rest of the step at once, on a worker thread
+      // beside this one as a volume of one part does.
+      const bool alone = tasks.size() == 1;
+      const int to = alone ? share.Last
+                           : std::min(share.Last, std::max(share.Next, part.First) + round - 1);
+      part.Runner.SetThreaded(alone && this->WorkerThreadFor(to - share.Next + 1));
       vtkInternals::SlabScan stages(this, part, input, array, share.Next, to, false);
       if (!part.Runner.Run(
             part.Kernel, stages, run.NX(), run.NY(), to - share.Next + 1, to < part.Last))
@@ -1142,6 +1194,7 @@ bool vtkErrorDiffusionSampler::ScanParts(vtkImageData* input, vtkDataArray* arra
       {
         share.Part->DropAheadPoints(diffusion);
         share.Part->Ended = false;
+        share.Part->Release();
       }
       done += share.Next - std::max(step.First, share.Part->ScanFirst);
     }

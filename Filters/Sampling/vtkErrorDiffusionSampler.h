@@ -83,18 +83,20 @@
  * MaximumRadius of them below its first layer (vtkBlueNoiseRelaxation's
  * context) but moves nothing into them. The parts depend on the volume
  * only, so the output does not depend on the threads; the seams between
- * them cost little (TestErrorDiffusionSamplerParts measures them). A volume
- * of one part is scanned on a worker thread while this thread relaxes and
- * builds the points, the densities mapped and the relaxed layers' points
- * built by whichever of the two has time (UseWorkerThread, when more than
- * one thread is allowed). The pass over the values that a point budget or
+ * them cost little (TestErrorDiffusionSamplerParts measures them). A part's
+ * buffers exist from its first round to its last, so memory grows with the
+ * threads, not with the parts. A volume of one part, or a part alone in its
+ * round (the slab of a streamed volume, the last part), is scanned on a
+ * worker thread while this thread relaxes and builds the points, the
+ * densities mapped and the relaxed layers' points built by whichever of the
+ * two has time (UseWorkerThread, when more than one thread is allowed). The pass over the values that a point budget or
  * an unset scalar range needs before the scan runs on as many threads as
  * are allowed.
  *
  * Time O(voxels); memory besides the input and the output a few layers (per
  * part side by side), and the compacted samples of the parts that wait for
- * their turn to write (12 bytes a point and 8 a row of voxels), kept for the
- * next execution. Progress is reported per layer (for
+ * their turn to write (12 bytes a point and 8 a row of voxels), freed when
+ * the execution ends. Progress is reported per layer (for
  * METHOD_POISSON_DISK and METHOD_SAMPLE_ELIMINATION every so many voxels or
  * candidates the kernel visits); abort is honored between layers (there, at
  * the kernel's reports) and leaves an empty output.
@@ -478,6 +480,7 @@ private:
   bool StartAssembly(vtkImageData* input);
   bool ScanSlab(vtkImageData* input, vtkDataArray* array);
   bool ScanParts(vtkImageData* input, vtkDataArray* array);
+  bool WorkerThreadFor(int layers) const;
   bool SampleWhole(vtkImageData* input, vtkDataArray* array);
   void FinishOutput(vtkImageData* input, vtkPolyData* output, vtkImageData* mask);
   void WarnIfEmpty(vtkIdType points, double expected);
