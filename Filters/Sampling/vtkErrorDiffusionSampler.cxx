@@ -643,8 +643,8 @@ void vtkErrorDiffusionSampler::PlanRun(const int whole[6], int piece, int pieces
 // The z-parts of the sampled layers, by the volume's size alone (so that the
 // output does not depend on the threads): parts of at least PartLayers layers
 // and PartVoxels voxels, each scanning OverlapLayers layers before its own
-// first. The relaxation, the whole-volume methods and volumes below two parts'
-// size are sampled in one part.
+// first. The whole-volume methods and volumes below two parts' size are
+// sampled in one part.
 void vtkErrorDiffusionSampler::PlanParts(bool atOnce)
 {
   vtkInternals& run = *this->Internals;

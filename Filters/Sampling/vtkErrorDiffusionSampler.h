@@ -70,8 +70,8 @@
  * a time; others deliver more than asked for, which is correct but saves
  * nothing. vtkMetaImageReader (VTK 9.2) is not one of them: it reads the
  * whole file (bluenoise-sample reads raw MetaImage through a vtkImageReader2
- * of its own, from the parsed header, instead). The points and the mask (GenerateMask) still
- * grow with the output.
+ * of its own, from the parsed header, instead). The points and the mask
+ * (GenerateMask) still grow with the output.
  *
  * Threads. A volume of two parts or more (PartLayers, PartVoxels) sampled
  * by error diffusion (relaxed or not) or white noise is cut into z-parts
@@ -87,11 +87,11 @@
  * buffers exist from its first round to its last, so memory grows with the
  * threads, not with the parts. A volume of one part, or a part alone in its
  * round (the slab of a streamed volume, the last part), is scanned on a
- * worker thread while this thread relaxes and builds the points, the
- * densities mapped and the relaxed layers' points built by whichever of the
- * two has time (UseWorkerThread, when more than one thread is allowed). The pass over the values that a point budget or
- * an unset scalar range needs before the scan runs on as many threads as
- * are allowed.
+ * worker thread while this thread relaxes and builds the points, the densities
+ * mapped and the relaxed layers' points built by whichever of the two has time
+ * (UseWorkerThread, when more than one thread is allowed). The pass over the
+ * values that a point budget or an unset scalar range needs before the scan
+ * runs on as many threads as are allowed.
  *
  * Time O(voxels); memory besides the input and the output a few layers (per
  * part side by side), and the compacted samples of the parts that wait for

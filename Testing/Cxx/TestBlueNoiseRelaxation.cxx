@@ -47,11 +47,11 @@ std::vector<std::vector<unsigned char>> Scan(int n, int layers, float g)
   return masks;
 }
 
-// Relaxes masks[first, last] (context below firstMovable), final copies by layer.
+// Relaxes masks[first, last] of n x n layers (context below firstMovable),
+// final copies by layer.
 std::vector<std::vector<unsigned char>> Relax(const std::vector<std::vector<unsigned char>>& masks,
-  const std::vector<float>& density, int first, int firstMovable, int last)
+  int n, const std::vector<float>& density, int first, int firstMovable, int last)
 {
-  const int n = static_cast<int>(std::lround(std::sqrt(double(density.size()))));
   vtkBlueNoiseRelaxation relaxation;
   relaxation.Begin(n, n, first, 5, firstMovable);
   std::vector<std::vector<unsigned char>> out(masks.size());
@@ -139,8 +139,8 @@ int main()
       }
       return c;
     };
-    const auto context = Relax(masks, density, first, movable, layers - 1);
-    const auto none = Relax(masks, density, movable, movable, layers - 1);
+    const auto context = Relax(masks, n, density, first, movable, layers - 1);
+    const auto none = Relax(masks, n, density, movable, movable, layers - 1);
     Check(count(context, movable, layers - 1) == count(masks, movable, layers - 1),
       "with context: the movable layers keep their samples");
     const double scanned = static_cast<double>(count(masks, movable, movable));
