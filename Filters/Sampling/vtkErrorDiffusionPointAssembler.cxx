@@ -35,8 +35,6 @@
 
 namespace
 {
-// dst[dstFirst + p] = src[srcFirst + ids[p]] for p in [0, n), value by value
-// (a tuple assignment copies with a memcpy call per tuple).
 // Whether points of a target array can be written by several threads at
 // once, each its own range: plain memory, one value per element (not bits).
 bool WritableSideBySide(vtkAbstractArray* source, vtkAbstractArray* target)
@@ -45,6 +43,8 @@ bool WritableSideBySide(vtkAbstractArray* source, vtkAbstractArray* target)
     target->HasStandardMemoryLayout() && target->GetDataType() != VTK_BIT;
 }
 
+// dst[dstFirst + p] = src[srcFirst + ids[p]] for p in [0, n), value by value
+// (a tuple assignment copies with a memcpy call per tuple).
 struct GatherWorker
 {
   template <typename SrcT, typename DstT>
