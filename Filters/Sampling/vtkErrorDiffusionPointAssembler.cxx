@@ -7,6 +7,7 @@
 #include "vtkDataArrayRange.h"
 #include "vtkDoubleArray.h"
 #include "vtkFloatArray.h"
+#include "vtkIdTypeArray.h"
 #include "vtkImageData.h"
 #include "vtkInformation.h"
 #include "vtkMatrix3x3.h"
@@ -381,10 +382,10 @@ void EnsureTuples(vtkAbstractArray* array, vtkIdType tuples)
   array->SetNumberOfTuples(tuples);
 }
 
-// `tuples` tuples and no room beyond. A block keeps its capacity (for the
-// next run that recycles the array) but gives back the pages past the
-// values.
-void Trim(vtkAbstractArray* array, vtkIdType tuples)
+// For a block array: `tuples` tuples and no room beyond, the block keeping
+// its capacity (for the next run that recycles the array) but giving back
+// its pages past the values. False for any other array.
+bool TrimBlockArray(vtkAbstractArray* array, vtkIdType tuples)
 {
 #if defined(__linux__) && defined(MADV_HUGEPAGE)
   const int components = std::max(1, array->GetNumberOfComponents());
@@ -393,11 +394,23 @@ void Trim(vtkAbstractArray* array, vtkIdType tuples)
   if (data && TrimBlock(data, used) > 0)
   {
     SetBlock(array, data, tuples * components);
-    return;
+    return true;
   }
+#else
+  (void)array;
+  (void)tuples;
 #endif
-  array->SetNumberOfTuples(tuples);
-  array->Squeeze();
+  return false;
+}
+
+// `tuples` tuples and no room beyond (see TrimBlockArray for blocks).
+void Trim(vtkAbstractArray* array, vtkIdType tuples)
+{
+  if (!TrimBlockArray(array, tuples))
+  {
+    array->SetNumberOfTuples(tuples);
+    array->Squeeze();
+  }
 }
 
 // Uniform offsets in [-0.5, 0.5) for the three axes of one voxel: SplitMix64's
@@ -426,13 +439,12 @@ void JitterOffsets(std::uint64_t seed, int i, int j, int k, double offsets[3])
 // axis-aligned grid (Axial: the matrix has no term off its diagonal) take the
 // diagonal terms only, three products instead of nine, with the same result.
 template <typename T, bool Axial>
-void WriteCenters(T* xyz, const double m[16], const int extent[6], int z,
-  const std::vector<vtkIdType>& ids, const std::vector<vtkIdType>& rowEnds, bool jitter,
-  std::uint64_t seed)
+void WriteCenters(T* xyz, const double m[16], const int extent[6], int z, const vtkIdType* ids,
+  const vtkIdType* rowEnds, int rows, bool jitter, std::uint64_t seed)
 {
   const vtkIdType nx = extent[1] - extent[0] + 1;
   vtkIdType p = 0;
-  for (size_t j = 0; j < rowEnds.size(); ++j)
+  for (int j = 0; j < rows; ++j)
   {
     const int y = extent[2] + static_cast<int>(j);
     const vtkIdType rowStart = static_cast<vtkIdType>(j) * nx;
@@ -466,19 +478,18 @@ void WriteCenters(T* xyz, const double m[16], const int extent[6], int z,
 }
 
 template <typename T>
-void WriteCenters(T* xyz, const double m[16], const int extent[6], int z,
-  const std::vector<vtkIdType>& ids, const std::vector<vtkIdType>& rowEnds, bool jitter,
-  std::uint64_t seed)
+void WriteCenters(T* xyz, const double m[16], const int extent[6], int z, const vtkIdType* ids,
+  const vtkIdType* rowEnds, int rows, bool jitter, std::uint64_t seed)
 {
   const bool axial =
     m[1] == 0.0 && m[2] == 0.0 && m[4] == 0.0 && m[6] == 0.0 && m[8] == 0.0 && m[9] == 0.0;
   if (axial)
   {
-    WriteCenters<T, true>(xyz, m, extent, z, ids, rowEnds, jitter, seed);
+    WriteCenters<T, true>(xyz, m, extent, z, ids, rowEnds, rows, jitter, seed);
   }
   else
   {
-    WriteCenters<T, false>(xyz, m, extent, z, ids, rowEnds, jitter, seed);
+    WriteCenters<T, false>(xyz, m, extent, z, ids, rowEnds, rows, jitter, seed);
   }
 }
 
@@ -541,8 +552,8 @@ void vtkErrorDiffusionPointAssembler::Begin(
   }
   const vtkIdType nx = std::max(0, extent[1] - extent[0] + 1);
   const vtkIdType ny = std::max(0, extent[3] - extent[2] + 1);
-  this->Layer.Ids.resize(static_cast<size_t>(nx * ny) + 1);
-  this->Layer.RowEnds.resize(static_cast<size_t>(ny));
+  this->LayerIds.resize(static_cast<size_t>(nx * ny) + 1);
+  this->LayerRowEnds.resize(static_cast<size_t>(ny));
 }
 
 //------------------------------------------------------------------------------
@@ -595,13 +606,14 @@ void vtkErrorDiffusionPointAssembler::Reserve(vtkIdType tuples)
 // time); eight voxels without a sample are passed over at once (most of them
 // at low densities). One slot past the samples is written.
 vtkIdType vtkErrorDiffusionPointAssembler::CompactLayer(
-  const unsigned char* mask, vtkIdType* ids, std::vector<vtkIdType>& rowEnds) const
+  const unsigned char* mask, vtkIdType* ids, vtkIdType* rowEnds) const
 {
   const vtkIdType nx = this->Extent[1] - this->Extent[0] + 1;
+  const vtkIdType ny = this->Extent[3] - this->Extent[2] + 1;
   vtkIdType n = 0;
-  for (size_t j = 0; j < rowEnds.size(); ++j)
+  for (vtkIdType j = 0; j < ny; ++j)
   {
-    const vtkIdType rowStart = static_cast<vtkIdType>(j) * nx;
+    const vtkIdType rowStart = j * nx;
     const unsigned char* bits = mask + rowStart;
     vtkIdType i = 0;
     for (; i + 8 <= nx; i += 8) // a fixed count inside: a third faster than one loop with a test
@@ -629,37 +641,125 @@ vtkIdType vtkErrorDiffusionPointAssembler::CompactLayer(
 }
 
 //------------------------------------------------------------------------------
-void vtkErrorDiffusionPointAssembler::Compact(int z, const float* density,
-  const unsigned char* mask, std::vector<vtkIdType>& scratch, LayerSamples& samples) const
+vtkErrorDiffusionPointAssembler::HeldLayers::HeldLayers() = default;
+vtkErrorDiffusionPointAssembler::HeldLayers::~HeldLayers() = default;
+
+//------------------------------------------------------------------------------
+vtkErrorDiffusionPointAssembler::LayerSamples vtkErrorDiffusionPointAssembler::HeldLayers::GetLayer(
+  size_t l) const
 {
-  const size_t layer = static_cast<size_t>(this->Extent[1] - this->Extent[0] + 1) *
-    static_cast<size_t>(this->Extent[3] - this->Extent[2] + 1);
-  scratch.resize(layer + 1);
-  samples.Z = z;
-  samples.RowEnds.resize(static_cast<size_t>(this->Extent[3] - this->Extent[2] + 1));
-  const vtkIdType n = this->CompactLayer(mask, scratch.data(), samples.RowEnds);
-  samples.Ids.assign(scratch.begin(), scratch.begin() + n);
-  samples.LayerDensity = nullptr;
-  samples.Densities.resize(static_cast<size_t>(n));
-  for (vtkIdType p = 0; p < n; ++p)
-  {
-    samples.Densities[p] = density[samples.Ids[p]];
-  }
+  const Entry& entry = this->Layers[l];
+  LayerSamples samples;
+  samples.Z = entry.Z;
+  samples.Ids = this->Ids->GetPointer(entry.First);
+  samples.RowEnds = this->RowEnds.data() + entry.FirstRow;
+  samples.Rows = this->Rows;
+  samples.Densities = this->Densities->GetPointer(entry.First);
+  return samples;
 }
 
 //------------------------------------------------------------------------------
-vtkIdType vtkErrorDiffusionPointAssembler::LayerSamples::DropLast(vtkIdType n)
+vtkIdType vtkErrorDiffusionPointAssembler::HeldLayers::DropLast(vtkIdType n)
 {
-  const vtkIdType count = this->Count();
-  n = std::min(std::max<vtkIdType>(n, 0), count);
-  const vtkIdType keep = count - n;
-  this->Ids.resize(static_cast<size_t>(keep));
-  this->Densities.resize(static_cast<size_t>(keep));
-  for (vtkIdType& end : this->RowEnds)
+  n = std::min(std::max<vtkIdType>(n, 0), this->Total);
+  this->Total -= n;
+  while (!this->Layers.empty() && this->Layers.back().First >= this->Total)
   {
-    end = std::min(end, keep);
+    this->RowEnds.resize(this->Layers.back().FirstRow);
+    this->Layers.pop_back();
+  }
+  if (!this->Layers.empty())
+  {
+    const vtkIdType keep = this->Total - this->Layers.back().First;
+    for (size_t r = this->Layers.back().FirstRow; r < this->RowEnds.size(); ++r)
+    {
+      this->RowEnds[r] = std::min(this->RowEnds[r], keep);
+    }
   }
   return n;
+}
+
+//------------------------------------------------------------------------------
+void vtkErrorDiffusionPointAssembler::HeldLayers::Clear()
+{
+  this->Layers.clear();
+  this->RowEnds.clear();
+  this->Total = 0;
+}
+
+//------------------------------------------------------------------------------
+void vtkErrorDiffusionPointAssembler::HeldLayers::Release()
+{
+  this->Clear();
+  if (this->Ids)
+  {
+    // A block counts as a spare by what it committed, not by its room.
+    TrimBlockArray(this->Ids, this->Peak);
+    TrimBlockArray(this->Densities, this->Peak);
+  }
+  this->Ids = nullptr;
+  this->Densities = nullptr;
+  this->Peak = 0;
+  std::vector<Entry>().swap(this->Layers);
+  std::vector<vtkIdType>().swap(this->RowEnds);
+}
+
+//------------------------------------------------------------------------------
+namespace
+{
+// Room for `needed` values in `array`, the first `used` kept: a bigger array
+// when it has less (by half again at least, or `room`), of the pool's blocks.
+template <typename ArrayT>
+void HoldRoom(vtkSmartPointer<ArrayT>& array, vtkIdType used, vtkIdType needed, vtkIdType room,
+  const std::shared_ptr<vtkErrorDiffusionBlockPool>& pool)
+{
+  if (array && array->GetSize() >= needed)
+  {
+    return;
+  }
+  const vtkIdType size = array ? array->GetSize() : 0;
+  auto grown = vtkSmartPointer<ArrayT>::New();
+  ReserveUninitialized(grown, std::max({ needed, room, size + size / 2 }), pool);
+  if (grown->GetSize() < needed)
+  {
+    grown->Resize(needed);
+  }
+  if (used > 0)
+  {
+    std::copy(array->GetPointer(0), array->GetPointer(0) + used, grown->GetPointer(0));
+  }
+  array = grown;
+}
+} // anonymous namespace
+
+//------------------------------------------------------------------------------
+void vtkErrorDiffusionPointAssembler::Hold(
+  int z, const float* density, const unsigned char* mask, HeldLayers& held) const
+{
+  const vtkIdType ny = this->Extent[3] - this->Extent[2] + 1;
+  const vtkIdType layer = (this->Extent[1] - this->Extent[0] + 1) * ny;
+  const vtkIdType first = held.Total;
+  // CompactLayer writes one slot past the samples.
+  HoldRoom(held.Ids, first, first + layer + 1, held.Room + 1, this->Pool);
+  HoldRoom(held.Densities, first, first + layer, held.Room, this->Pool);
+  const size_t firstRow = held.RowEnds.size();
+  held.RowEnds.resize(firstRow + static_cast<size_t>(ny));
+  held.Rows = static_cast<int>(ny);
+  const vtkIdType* ids = held.Ids->GetPointer(first);
+  const vtkIdType n = this->CompactLayer(mask, held.Ids->GetPointer(first), &held.RowEnds[firstRow]);
+  if (n == 0)
+  {
+    held.RowEnds.resize(firstRow);
+    return;
+  }
+  float* densities = held.Densities->GetPointer(first);
+  for (vtkIdType p = 0; p < n; ++p)
+  {
+    densities[p] = density[ids[p]];
+  }
+  held.Layers.push_back({ z, first, firstRow });
+  held.Total = first + n;
+  held.Peak = std::max(held.Peak, held.Total + 1);
 }
 
 //------------------------------------------------------------------------------
@@ -683,84 +783,74 @@ void vtkErrorDiffusionPointAssembler::Write(
   {
     return;
   }
-  const int z = samples.Z;
   if (auto* d = vtkDoubleArray::SafeDownCast(this->Coordinates))
   {
-    WriteCenters(d->GetPointer(3 * first), this->IndexToPhysical, this->Extent, z, samples.Ids,
-      samples.RowEnds, this->Jitter, this->JitterSeed);
+    WriteCenters(d->GetPointer(3 * first), this->IndexToPhysical, this->Extent, samples.Z,
+      samples.Ids, samples.RowEnds, samples.Rows, this->Jitter, this->JitterSeed);
   }
   else
   {
     WriteCenters(vtkFloatArray::SafeDownCast(this->Coordinates)->GetPointer(3 * first),
-      this->IndexToPhysical, this->Extent, z, samples.Ids, samples.RowEnds, this->Jitter,
-      this->JitterSeed);
+      this->IndexToPhysical, this->Extent, samples.Z, samples.Ids, samples.RowEnds, samples.Rows,
+      this->Jitter, this->JitterSeed);
   }
   float* densities = this->Densities->GetPointer(first);
-  if (samples.LayerDensity)
+  if (samples.Densities)
+  {
+    std::copy(samples.Densities, samples.Densities + n, densities);
+  }
+  else
   {
     for (vtkIdType p = 0; p < n; ++p)
     {
       densities[p] = samples.LayerDensity[samples.Ids[p]];
     }
   }
-  else
-  {
-    std::copy(samples.Densities.begin(), samples.Densities.begin() + n, densities);
-  }
+  this->WriteArrays(samples, first, others ? Arrays::All : Arrays::SideBySide);
+}
+
+//------------------------------------------------------------------------------
+void vtkErrorDiffusionPointAssembler::WriteOthers(const LayerSamples& samples, vtkIdType first) const
+{
+  this->WriteArrays(samples, first, Arrays::Others);
+}
+
+//------------------------------------------------------------------------------
+// The carried arrays' values of the samples, as points [first, first + n):
+// those of the arrays writable side by side, of the others, or of all.
+void vtkErrorDiffusionPointAssembler::WriteArrays(
+  const LayerSamples& samples, vtkIdType first, Arrays which) const
+{
   // The layer's first voxel in the source image (full x and y extent).
   const vtkIdType layerSize = static_cast<vtkIdType>(this->SourceExtent[1] - this->SourceExtent[0] + 1) *
     (this->SourceExtent[3] - this->SourceExtent[2] + 1);
-  const vtkIdType layerFirst = static_cast<vtkIdType>(z - this->SourceExtent[4]) * layerSize;
-  const vtkIdType* ids = samples.Ids.data();
+  const vtkIdType layerFirst = static_cast<vtkIdType>(samples.Z - this->SourceExtent[4]) * layerSize;
+  const vtkIdType* ids = samples.Ids;
+  const vtkIdType n = samples.Count();
   for (size_t a = 0; a < this->Targets.size(); ++a)
   {
-    auto* source = vtkDataArray::SafeDownCast(this->Sources[a]);
-    auto* target = vtkDataArray::SafeDownCast(this->Targets[a]);
-    if (!others && !WritableSideBySide(source, target))
+    vtkAbstractArray* source = this->Sources[a];
+    vtkAbstractArray* target = this->Targets[a];
+    const bool sideBySide = WritableSideBySide(source, target);
+    if ((which == Arrays::SideBySide && !sideBySide) || (which == Arrays::Others && sideBySide))
     {
-      continue; // left to WriteOthers
+      continue;
     }
-    if (source && target)
+    auto* sourceData = vtkDataArray::SafeDownCast(source);
+    auto* targetData = vtkDataArray::SafeDownCast(target);
+    if (sourceData && targetData)
     {
       using Dispatcher = vtkArrayDispatch::Dispatch2SameValueType;
       GatherWorker worker;
-      if (!Dispatcher::Execute(source, target, worker, ids, n, layerFirst, first))
+      if (!Dispatcher::Execute(sourceData, targetData, worker, ids, n, layerFirst, first))
       {
-        worker(source, target, ids, n, layerFirst, first);
+        worker(sourceData, targetData, ids, n, layerFirst, first);
       }
       continue;
     }
     for (vtkIdType p = 0; p < n; ++p) // strings and other non-numeric arrays
     {
-      this->Targets[a]->SetTuple(first + p, layerFirst + ids[p], this->Sources[a]);
-    }
-  }
-}
-
-//------------------------------------------------------------------------------
-void vtkErrorDiffusionPointAssembler::WriteOthers(const LayerSamples& samples, vtkIdType first)
-{
-  const vtkIdType layerSize = static_cast<vtkIdType>(this->SourceExtent[1] - this->SourceExtent[0] + 1) *
-    (this->SourceExtent[3] - this->SourceExtent[2] + 1);
-  const vtkIdType layerFirst = static_cast<vtkIdType>(samples.Z - this->SourceExtent[4]) * layerSize;
-  const vtkIdType* ids = samples.Ids.data();
-  const vtkIdType n = samples.Count();
-  for (size_t a = 0; a < this->Targets.size(); ++a)
-  {
-    if (WritableSideBySide(this->Sources[a], this->Targets[a]))
-    {
-      continue;
-    }
-    auto* source = vtkDataArray::SafeDownCast(this->Sources[a]);
-    auto* target = vtkDataArray::SafeDownCast(this->Targets[a]);
-    if (source && target)
-    {
-      GatherWorker()(source, target, ids, n, layerFirst, first);
-      continue;
-    }
-    for (vtkIdType p = 0; p < n; ++p)
-    {
-      this->Targets[a]->SetTuple(first + p, layerFirst + ids[p], this->Sources[a]);
+      target->SetTuple(first + p, layerFirst + ids[p], source);
     }
   }
 }
@@ -786,12 +876,14 @@ void vtkErrorDiffusionPointAssembler::AddLayer(
   {
     return;
   }
-  // In place, without Compact's copy: Ids has room for a whole layer.
-  this->Layer.Z = z;
-  this->Layer.Densities.clear();
-  this->Layer.LayerDensity = density;
-  this->CompactLayer(mask, this->Layer.Ids.data(), this->Layer.RowEnds);
-  this->Write(this->Layer, this->Grow(this->Layer.Count()), true);
+  LayerSamples samples; // in place: LayerIds has room for a whole layer
+  samples.Z = z;
+  samples.Ids = this->LayerIds.data();
+  samples.RowEnds = this->LayerRowEnds.data();
+  samples.Rows = static_cast<int>(this->LayerRowEnds.size());
+  samples.LayerDensity = density;
+  this->CompactLayer(mask, this->LayerIds.data(), this->LayerRowEnds.data());
+  this->Write(samples, this->Grow(samples.Count()), true);
 }
 
 //------------------------------------------------------------------------------

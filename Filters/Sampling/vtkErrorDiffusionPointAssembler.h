@@ -57,6 +57,7 @@ class vtkAbstractArray;
 class vtkCellArray;
 class vtkDataArray;
 class vtkFloatArray;
+class vtkIdTypeArray;
 class vtkImageData;
 class vtkPointData;
 class vtkPoints;
@@ -100,30 +101,76 @@ public:
   vtkIdType GetNumberOfPoints() const { return this->Total; }
 
   /**
-   * The samples of one layer, compacted: AddLayer in two halves, so that
-   * layers sampled on other threads can be compacted there and written in
-   * order into room taken on one thread (Grow).
+   * The samples of one layer, compacted: their in-layer indices, row by row,
+   * and the densities they were drawn with. A view of memory it does not own.
    */
   struct LayerSamples
   {
-    int Z = 0;                      ///< global layer
-    std::vector<vtkIdType> Ids;     ///< in-layer indices of the samples, row by row
-    std::vector<vtkIdType> RowEnds; ///< where each row's samples end in Ids
-    std::vector<float> Densities;   ///< the density each sample was drawn with
-    /// Else (Densities empty) the layer's densities, by in-layer index.
-    const float* LayerDensity = nullptr;
-    vtkIdType Count() const { return this->RowEnds.empty() ? 0 : this->RowEnds.back(); }
-    /// Drops the last n samples (at most all); returns how many went.
-    vtkIdType DropLast(vtkIdType n);
+    int Z = 0;                           ///< global layer
+    const vtkIdType* Ids = nullptr;      ///< in-layer indices of the samples, row by row
+    const vtkIdType* RowEnds = nullptr;  ///< where each row's samples end in Ids
+    int Rows = 0;                        ///< the layer's rows
+    const float* Densities = nullptr;    ///< the density each sample was drawn with,
+    const float* LayerDensity = nullptr; ///< or (Densities null) the layer's, by in-layer index
+    vtkIdType Count() const { return this->Rows > 0 ? this->RowEnds[this->Rows - 1] : 0; }
   };
 
   /**
-   * Compacts the samples of global layer z (as AddLayer takes them) into
-   * `samples`; `scratch` is a buffer of the caller's. Reads nothing that
-   * changes while layers are added: any thread may call it.
+   * Layers held back to be written later: AddLayer in two halves (Hold, then
+   * Grow and Write), so that layers sampled on other threads are compacted
+   * there and written in order into room taken on one thread. The samples of
+   * all the layers lie one after another in arrays of the assembler's
+   * blocks: Release gives them to its spares, and the next run that holds as
+   * many writes into memory already committed (fresh memory of 4 kB pages
+   * costs a page fault per page, more than the compaction itself).
    */
-  void Compact(int z, const float* density, const unsigned char* mask,
-    std::vector<vtkIdType>& scratch, LayerSamples& samples) const;
+  class VTKFILTERSBLUENOISE_EXPORT HeldLayers
+  {
+  public:
+    HeldLayers();
+    ~HeldLayers();
+    HeldLayers(const HeldLayers&) = delete;
+    HeldLayers& operator=(const HeldLayers&) = delete;
+
+    size_t GetNumberOfLayers() const { return this->Layers.size(); }
+    LayerSamples GetLayer(size_t l) const;
+    vtkIdType GetNumberOfPoints() const { return this->Total; }
+    /// Drops the last n samples (at most all); returns how many went.
+    vtkIdType DropLast(vtkIdType n);
+    /**
+     * The points to make room for at the first Hold: address space, as the
+     * output's arrays take (memory is committed only where written).
+     */
+    void SetRoom(vtkIdType points) { this->Room = points; }
+    /// No layers; the memory stays for the next ones.
+    void Clear();
+    /// No layers and no memory (its blocks become the assembler's spares).
+    void Release();
+
+  private:
+    friend class vtkErrorDiffusionPointAssembler;
+    struct Entry
+    {
+      int Z;
+      vtkIdType First; // its first sample in Ids and Densities
+      size_t FirstRow; // its first row end in RowEnds
+    };
+    std::vector<Entry> Layers;
+    std::vector<vtkIdType> RowEnds; // each from its layer's first sample
+    vtkSmartPointer<vtkIdTypeArray> Ids;
+    vtkSmartPointer<vtkFloatArray> Densities;
+    int Rows = 0;
+    vtkIdType Total = 0;
+    vtkIdType Room = 0;
+    vtkIdType Peak = 0; // the most points held in the arrays: what they committed
+  };
+
+  /**
+   * Compacts the samples of global layer z (as AddLayer takes them) after
+   * those `held` has. Reads nothing that changes while layers are added: any
+   * thread may call it, one at a time for one `held`.
+   */
+  void Hold(int z, const float* density, const unsigned char* mask, HeldLayers& held) const;
 
   /// Room for n more points after those appended; returns the first one's index.
   vtkIdType Grow(vtkIdType n);
@@ -136,7 +183,7 @@ public:
    * afterwards on one thread.
    */
   void Write(const LayerSamples& samples, vtkIdType first, bool others) const;
-  void WriteOthers(const LayerSamples& samples, vtkIdType first);
+  void WriteOthers(const LayerSamples& samples, vtkIdType first) const;
   /// Whether an array is carried that Write leaves to WriteOthers.
   bool HasOtherArrays() const;
 
@@ -175,8 +222,14 @@ private:
   void AddTargets(vtkPointData* inPD, vtkIdType points, vtkPointData* outPD);
   vtkSmartPointer<vtkAbstractArray> TargetFor(vtkAbstractArray* source);
   void Reserve(vtkIdType tuples);
-  vtkIdType CompactLayer(
-    const unsigned char* mask, vtkIdType* ids, std::vector<vtkIdType>& rowEnds) const;
+  vtkIdType CompactLayer(const unsigned char* mask, vtkIdType* ids, vtkIdType* rowEnds) const;
+  enum class Arrays
+  {
+    SideBySide,
+    Others,
+    All
+  };
+  void WriteArrays(const LayerSamples& samples, vtkIdType first, Arrays which) const;
 
   int Extent[6] = { 0, -1, 0, -1, 0, -1 };       // sampled
   int SourceExtent[6] = { 0, -1, 0, -1, 0, -1 }; // of the image the arrays come from
@@ -204,7 +257,9 @@ private:
     const std::string& role, const char* className, int components);
   template <typename ArrayT>
   vtkSmartPointer<ArrayT> NewOrRecycled(const std::string& role, int components);
-  LayerSamples Layer; // AddLayer's layer, compacted in place
+  // AddLayer's layer, compacted in place.
+  std::vector<vtkIdType> LayerIds;
+  std::vector<vtkIdType> LayerRowEnds;
   // This assembler's blocks freed by their arrays, kept for its next run.
   std::shared_ptr<vtkErrorDiffusionBlockPool> Pool;
 };

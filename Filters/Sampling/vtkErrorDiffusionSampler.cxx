@@ -161,7 +161,6 @@ public:
   // to its last, so parts side by side hold the memory of one part a thread.
   struct Part : public vtkErrorDiffusionLayerBacklog::Sink
   {
-    using Samples = vtkErrorDiffusionPointAssembler::LayerSamples;
     vtkInternals* Run = nullptr;
     int First = 0; // sampled layers
     int Last = -1;
@@ -170,12 +169,10 @@ public:
     vtkBlueNoiseRelaxation Relaxation;
     vtkErrorDiffusionLayerBacklog Backlog; // the relaxation's final layers, to Emit
     vtkErrorDiffusionLayerRunner Runner;   // its rounds, when parts run side by side
-    std::vector<Samples> Held;             // final layers not written yet (Held[0, Count))
-    size_t Count = 0;
+    vtkErrorDiffusionPointAssembler::HeldLayers Held; // final layers not written yet
     bool Direct = true;  // the writer: its layers go straight into the output
     bool Ended = false;  // its last layer was scanned in the round just run
     bool Started = false; // its buffers are made (Start)
-    std::vector<vtkIdType> Scratch; // the compaction's buffer
 
     // A final layer of samples: into the points (or held, see above), and
     // into the mask unless the kernel wrote it there. From the thread that
@@ -190,11 +187,7 @@ public:
       }
       else
       {
-        if (this->Count == this->Held.size())
-        {
-          this->Held.emplace_back();
-        }
-        run.Assembler.Compact(z, density, mask, this->Scratch, this->Held[this->Count++]);
+        run.Assembler.Hold(z, density, mask, this->Held);
       }
       if (run.Mask)
       {
@@ -252,6 +245,9 @@ public:
       this->Kernel = begun;
       this->Kernel.Begin(run.NX(), run.NY(), this->ScanFirst);
       this->StartRelaxation(seed);
+      // Room for a point per voxel, as the output's (see Begin of the assembler).
+      this->Held.SetRoom(
+        std::min<vtkIdType>((this->Last - this->First + 1) * run.LayerSize(), vtkIdType(1) << 28));
     }
 
     void StartRelaxation(std::uint64_t seed)
@@ -273,29 +269,19 @@ public:
       this->Runner.ReleaseBuffers();
     }
 
-    // The points held.
-    vtkIdType HeldPoints() const
-    {
-      vtkIdType n = 0;
-      for (size_t l = 0; l < this->Count; ++l)
-      {
-        n += this->Held[l].Count();
-      }
-      return n;
-    }
-
     // The held layers after the output's points, by the writer (the one
     // thread that writes there).
     void WriteHeld()
     {
       vtkErrorDiffusionPointAssembler& assembler = this->Run->Assembler;
-      vtkIdType first = assembler.Grow(this->HeldPoints());
-      for (size_t l = 0; l < this->Count; ++l)
+      vtkIdType first = assembler.Grow(this->Held.GetNumberOfPoints());
+      for (size_t l = 0; l < this->Held.GetNumberOfLayers(); ++l)
       {
-        assembler.Write(this->Held[l], first, true);
-        first += this->Held[l].Count();
+        const vtkErrorDiffusionPointAssembler::LayerSamples layer = this->Held.GetLayer(l);
+        assembler.Write(layer, first, true);
+        first += layer.Count();
       }
-      this->Count = 0;
+      this->Held.Release(); // a writer holds no more
     }
 
     // Error diffusion cannot take a point back: a scan that ends on negative
@@ -311,16 +297,9 @@ public:
       {
         return;
       }
-      vtkIdType n = static_cast<vtkIdType>(std::llround(-leftover));
-      vtkIdType removed = 0;
-      if (this->Direct)
-      {
-        removed = run.Assembler.RemoveLast(n);
-      }
-      for (size_t l = this->Count; !this->Direct && l > 0 && removed < n; --l)
-      {
-        removed += this->Held[l - 1].DropLast(n - removed);
-      }
+      const vtkIdType n = static_cast<vtkIdType>(std::llround(-leftover));
+      const vtkIdType removed =
+        this->Direct ? run.Assembler.RemoveLast(n) : this->Held.DropLast(n);
       if (run.Mask)
       {
         const vtkIdType layer = run.LayerSize();
@@ -373,9 +352,7 @@ public:
     for (auto& part : this->Parts)
     {
       part->Backlog.Clear();
-      part->Count = 0;
-      std::vector<Part::Samples>().swap(part->Held);
-      std::vector<vtkIdType>().swap(part->Scratch);
+      part->Held.Release();
       part->Release();
     }
     this->Begun = vtkErrorDiffusionKernel();
@@ -837,7 +814,7 @@ bool vtkErrorDiffusionSampler::StartRun(vtkInformation*, vtkInformationVector**)
   }
   for (auto& part : run.Parts)
   {
-    part->Count = 0;
+    part->Held.Clear();
     part->Direct = true;
     part->Ended = false;
     part->Started = false;
@@ -1218,17 +1195,17 @@ void vtkErrorDiffusionSampler::vtkInternals::WriteHeld(const std::vector<Part*>&
 {
   struct Placed
   {
-    const Part::Samples* Layer;
+    vtkErrorDiffusionPointAssembler::LayerSamples Layer;
     vtkIdType First;
   };
   std::vector<Placed> layers;
   vtkIdType total = 0;
   for (const Part* part : parts)
   {
-    for (size_t l = 0; l < part->Count; ++l)
+    for (size_t l = 0; l < part->Held.GetNumberOfLayers(); ++l)
     {
-      layers.push_back({ &part->Held[l], total });
-      total += part->Held[l].Count();
+      layers.push_back({ part->Held.GetLayer(l), total });
+      total += layers.back().Layer.Count();
     }
   }
   if (total > 0)
@@ -1236,16 +1213,16 @@ void vtkErrorDiffusionSampler::vtkInternals::WriteHeld(const std::vector<Part*>&
     const vtkIdType base = this->Assembler.Grow(total);
     vtkBlueNoiseThreads::ForEach(static_cast<int>(layers.size()), [&](int l) {
       const Placed& placed = layers[static_cast<size_t>(l)];
-      this->Assembler.Write(*placed.Layer, base + placed.First, false);
+      this->Assembler.Write(placed.Layer, base + placed.First, false);
     });
     for (size_t l = 0; this->Assembler.HasOtherArrays() && l < layers.size(); ++l)
     {
-      this->Assembler.WriteOthers(*layers[l].Layer, base + layers[l].First);
+      this->Assembler.WriteOthers(layers[l].Layer, base + layers[l].First);
     }
   }
   for (Part* part : parts)
   {
-    part->Count = 0;
+    part->Held.Release(); // its blocks to the parts still holding
   }
 }
 
