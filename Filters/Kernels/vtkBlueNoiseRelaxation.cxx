@@ -143,13 +143,17 @@ void vtkBlueNoiseRelaxation::Begin(
     slot.Z = firstZ - RingSize - 1;
     slot.Bits.assign(words, 0);
   }
+  // The planes are made by the first layer that needs them (Push): a run
+  // whose first layers are context (a part side by side with the one below
+  // it) holds none while it scans them.
   this->Planes.resize(PlaneCount);
   for (Plane& plane : this->Planes)
   {
     plane.Z = firstZ - RingSize - 1;
-    plane.Density.resize(layer);
-    plane.Mask.resize(layer);
-    plane.Moved.resize(layer);
+    if (plane.Density.size() != layer)
+    {
+      plane = Plane();
+    }
   }
 }
 
@@ -602,6 +606,12 @@ const std::vector<vtkBlueNoiseRelaxation::Layer>& vtkBlueNoiseRelaxation::Push(
     return this->Done;
   }
   Plane& plane = this->Planes[static_cast<size_t>(z - this->First) % PlaneCount];
+  if (plane.Density.size() != layer)
+  {
+    plane.Density.resize(layer);
+    plane.Mask.resize(layer);
+    plane.Moved.resize(layer);
+  }
   plane.Z = z;
   plane.Count = count;
   std::copy(density, density + layer, plane.Density.begin());

@@ -42,7 +42,8 @@
  * borrowed stay as they are through the next Push too, and are reused by the
  * one after: a caller may hand them to another thread for a while. Memory:
  * the densities, masks and move flags (6 bytes a voxel) of the MaximumRadius
- * + 3 layers not yet final, and the masks as bits of 32 layers.
+ * + 3 layers not yet final, made by the first layer that is not context, and
+ * the masks as bits of 32 layers.
  *
  * The searches: the rows of bits around a sample (those its search and its
  * face neighbors' read) are copied into a window, 64 voxels wide, once per
