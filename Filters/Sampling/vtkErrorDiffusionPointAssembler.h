@@ -120,9 +120,10 @@ public:
    * Grow and Write), so that layers sampled on other threads are compacted
    * there and written in order into room taken on one thread. The samples of
    * all the layers lie one after another in arrays of the assembler's
-   * blocks: Release gives them to its spares, and the next run that holds as
-   * many writes into memory already committed (fresh memory of 4 kB pages
-   * costs a page fault per page, more than the compaction itself).
+   * blocks, 2 MB pages (fresh memory of 4 kB pages costs a page fault per
+   * page, more than the compaction itself); Release gives them to its
+   * spares, so the next store of the run writes into memory already
+   * committed.
    */
   class VTKFILTERSBLUENOISE_EXPORT HeldLayers
   {
