@@ -493,6 +493,9 @@ void WriteCenters(T* xyz, const double m[16], const int extent[6], int z, const 
   }
 }
 
+// The most points an array makes room for at once (address space, see Begin).
+constexpr vtkIdType MaximumRoom = vtkIdType(1) << 28;
+
 vtkIdType VoxelCount(const int extent[6])
 {
   vtkIdType n = 1;
@@ -543,7 +546,7 @@ void vtkErrorDiffusionPointAssembler::Begin(
   // only where it is written, so the untouched tail costs address space, not
   // memory, and End() gives it back. Growing from a small array instead would
   // copy the points and fault in every copy.
-  const vtkIdType reserve = std::min<vtkIdType>(VoxelCount(extent), vtkIdType(1) << 28);
+  const vtkIdType reserve = std::min(VoxelCount(extent), MaximumRoom);
   ReserveUninitialized(this->Coordinates, reserve, this->Pool);
   ReserveUninitialized(this->Densities, reserve, this->Pool);
   for (vtkAbstractArray* target : this->Targets)
@@ -739,14 +742,15 @@ void vtkErrorDiffusionPointAssembler::Hold(
   const vtkIdType ny = this->Extent[3] - this->Extent[2] + 1;
   const vtkIdType layer = (this->Extent[1] - this->Extent[0] + 1) * ny;
   const vtkIdType first = held.Total;
+  const vtkIdType room = std::min(held.Room, MaximumRoom);
   // CompactLayer writes one slot past the samples.
-  HoldRoom(held.Ids, first, first + layer + 1, held.Room + 1, this->Pool);
-  HoldRoom(held.Densities, first, first + layer, held.Room, this->Pool);
+  HoldRoom(held.Ids, first, first + layer + 1, room + 1, this->Pool);
+  HoldRoom(held.Densities, first, first + layer, room, this->Pool);
   const size_t firstRow = held.RowEnds.size();
   held.RowEnds.resize(firstRow + static_cast<size_t>(ny));
   held.Rows = static_cast<int>(ny);
-  const vtkIdType* ids = held.Ids->GetPointer(first);
-  const vtkIdType n = this->CompactLayer(mask, held.Ids->GetPointer(first), &held.RowEnds[firstRow]);
+  vtkIdType* ids = held.Ids->GetPointer(first);
+  const vtkIdType n = this->CompactLayer(mask, ids, &held.RowEnds[firstRow]);
   if (n == 0)
   {
     held.RowEnds.resize(firstRow);

@@ -139,8 +139,9 @@ public:
     /// Drops the last n samples (at most all); returns how many went.
     vtkIdType DropLast(vtkIdType n);
     /**
-     * The points to make room for at the first Hold: address space, as the
-     * output's arrays take (memory is committed only where written).
+     * The points to make room for at the first Hold (up to 2^28): address
+     * space, as the output's arrays take (memory is committed only where
+     * written).
      */
     void SetRoom(vtkIdType points) { this->Room = points; }
     /// No layers; the memory stays for the next ones.

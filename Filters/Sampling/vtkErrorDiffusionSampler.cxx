@@ -245,9 +245,7 @@ public:
       this->Kernel = begun;
       this->Kernel.Begin(run.NX(), run.NY(), this->ScanFirst);
       this->StartRelaxation(seed);
-      // Room for a point per voxel, as the output's (see Begin of the assembler).
-      this->Held.SetRoom(
-        std::min<vtkIdType>((this->Last - this->First + 1) * run.LayerSize(), vtkIdType(1) << 28));
+      this->Held.SetRoom((this->Last - this->First + 1) * run.LayerSize()); // a point a voxel
     }
 
     void StartRelaxation(std::uint64_t seed)
