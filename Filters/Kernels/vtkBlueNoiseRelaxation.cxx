@@ -1,6 +1,7 @@
 // SPDX-FileCopyrightText: Copyright (c) 2025-2026 the BlueNoiseSampling contributors
 // SPDX-License-Identifier: BSD-3-Clause
 #include "vtkBlueNoiseRelaxation.h"
+#include "vtkBlueNoiseDensityClass.h"
 
 #include <algorithm>
 #include <cmath>
@@ -315,6 +316,168 @@ void vtkBlueNoiseRelaxation::Load(const std::vector<RowRun>& runs, int x, int y)
 }
 
 //------------------------------------------------------------------------------
+// The classes of a layer's densities (DensityClass) into `slot`: the lowest
+// and highest of the positive ones per word and in all, and each voxel's
+// when they differ. A layer of one density (the test is cheap) is done at
+// once; the others in loops the compiler vectorizes (the lowest class as the
+// highest of 255 - c over the positive voxels, whose classes are not 0).
+void vtkBlueNoiseRelaxation::Classify(Slot& slot, const float* density)
+{
+  const size_t layer = static_cast<size_t>(this->NX) * this->NY;
+  if (layer == 0 || std::all_of(density, density + layer, [g = density[0]](float v) { return v == g; }))
+  {
+    const int c = layer == 0 ? 0 : vtkBlueNoiseDensityClass::Of(density[0]);
+    slot.Low = c == 0 ? 255 : c;
+    slot.High = c;
+    slot.WordLow.assign(slot.Bits.size(), static_cast<unsigned char>(slot.Low));
+    slot.WordHigh.assign(slot.Bits.size(), static_cast<unsigned char>(slot.High));
+    std::vector<unsigned char>().swap(slot.Classes);
+    return;
+  }
+  this->ClassScratch.resize(layer);
+  unsigned char* classes = this->ClassScratch.data();
+  for (size_t i = 0; i < layer; ++i)
+  {
+    std::uint32_t bits;
+    std::memcpy(&bits, density + i, sizeof(bits));
+    classes[i] = static_cast<unsigned char>(vtkBlueNoiseDensityClass::OfBits(bits));
+  }
+  slot.WordLow.assign(slot.Bits.size(), 255);
+  slot.WordHigh.assign(slot.Bits.size(), 0);
+  int low = 255, high = 0;
+  for (int y = 0; y < this->NY; ++y)
+  {
+    const unsigned char* row = classes + static_cast<size_t>(y) * this->NX;
+    for (int x0 = 0; x0 < this->NX; x0 += 64)
+    {
+      const int x1 = std::min(this->NX, x0 + 64);
+      unsigned char complement = 0, hi = 0; // of the lowest: 255 - it
+      for (int x = x0; x < x1; ++x)
+      {
+        const unsigned char c = row[x];
+        complement = std::max(complement, static_cast<unsigned char>(c ? 255 - c : 0));
+        hi = std::max(hi, c);
+      }
+      const std::ptrdiff_t word = this->RowStart(y) + (x0 >> 6);
+      slot.WordLow[word] = static_cast<unsigned char>(hi ? 255 - complement : 255);
+      slot.WordHigh[word] = hi;
+      low = std::min<int>(low, slot.WordLow[word]);
+      high = std::max<int>(high, hi);
+    }
+  }
+  slot.Low = low;
+  slot.High = high;
+  if (low < high)
+  {
+    slot.Classes.assign(classes, classes + layer);
+  }
+  else
+  {
+    std::vector<unsigned char>().swap(slot.Classes); // one class: no copy kept
+  }
+}
+
+//------------------------------------------------------------------------------
+// Whether the layer relaxed has samples of dissimilar densities within
+// reach of one another (Mixed); if so, per row and word the lowest and
+// highest class within Reach rows and layers (MixedLow, MixedHigh).
+void vtkBlueNoiseRelaxation::FindMixed()
+{
+  int low = 255, high = 0;
+  for (const Slot* slot : this->Slots)
+  {
+    if (slot)
+    {
+      low = std::min(low, slot->Low);
+      high = std::max(high, slot->High);
+    }
+  }
+  this->Mixed = low <= high && !vtkBlueNoiseDensityClass::Alike(low, high);
+  if (!this->Mixed)
+  {
+    return;
+  }
+  const size_t words = this->NoSamples.size();
+  std::vector<unsigned char> low1(words, 255), high1(words, 0); // over the layers
+  for (const Slot* slot : this->Slots)
+  {
+    if (!slot)
+    {
+      continue;
+    }
+    for (size_t w = 0; w < words; ++w)
+    {
+      low1[w] = std::min(low1[w], slot->WordLow[w]);
+      high1[w] = std::max(high1[w], slot->WordHigh[w]);
+    }
+  }
+  this->MixedLow.assign(words, 255);
+  this->MixedHigh.assign(words, 0);
+  const std::ptrdiff_t stride = this->WordsPerRow;
+  for (int y = 0; y < this->NY; ++y) // and over the rows
+  {
+    const std::ptrdiff_t start = this->RowStart(y) - 1;
+    for (std::ptrdiff_t w = 0; w < stride; ++w)
+    {
+      unsigned char lo = 255, hi = 0;
+      for (int dy = -Reach; dy <= Reach; ++dy)
+      {
+        lo = std::min(lo, low1[start + dy * stride + w]);
+        hi = std::max(hi, high1[start + dy * stride + w]);
+      }
+      this->MixedLow[start + w] = lo;
+      this->MixedHigh[start + w] = hi;
+    }
+  }
+}
+
+//------------------------------------------------------------------------------
+// Whether a sample of class `cls` at (x, y) of the layer relaxed may have
+// samples of a dissimilar density within reach.
+inline bool vtkBlueNoiseRelaxation::MixedAround(int x, int y, int cls) const
+{
+  const std::ptrdiff_t row = this->RowStart(y);
+  const std::ptrdiff_t a = row + ((x - Reach) >> 6), b = row + ((x + Reach) >> 6);
+  const int lo = std::min(this->MixedLow[a], this->MixedLow[b]);
+  const int hi = std::max(this->MixedHigh[a], this->MixedHigh[b]);
+  return !vtkBlueNoiseDensityClass::Alike(lo, cls) || !vtkBlueNoiseDensityClass::Alike(hi, cls);
+}
+
+//------------------------------------------------------------------------------
+// Clears from the window's `runs` of rows around (x, y) the samples whose
+// class is dissimilar to `cls`, and those beyond the search along x (Radius
+// + 1, where Nearest puts its sentinel).
+void vtkBlueNoiseRelaxation::KeepSimilar(const std::vector<RowRun>& runs, int x, int y, int cls)
+{
+  const int span = this->Radius + 1;
+  const std::uint64_t reach = ((std::uint64_t(1) << (2 * span + 1)) - 1) << (32 - span);
+  for (const RowRun& run : runs)
+  {
+    const Slot* slot = this->Slots[run.DZ + Reach];
+    std::uint64_t* cell = this->Window + (run.DZ + Reach) * Span + run.Low + Reach;
+    for (int dy = run.Low; dy <= run.High; ++dy, ++cell)
+    {
+      std::uint64_t bits = *cell & reach;
+      if (!slot || slot->Classes.empty())
+      {
+        *cell = slot && vtkBlueNoiseDensityClass::Alike(slot->Low, cls) ? bits : 0;
+        continue;
+      }
+      const std::ptrdiff_t first = static_cast<std::ptrdiff_t>(y + dy) * this->NX + (x - 32);
+      for (std::uint64_t left = bits; left; left &= left - 1)
+      {
+        const int k = __builtin_ctzll(left);
+        if (!vtkBlueNoiseDensityClass::Alike(slot->Classes[first + k], cls))
+        {
+          bits &= ~(std::uint64_t(1) << k);
+        }
+      }
+      *cell = bits;
+    }
+  }
+}
+
+//------------------------------------------------------------------------------
 // The squared distance from the voxel at offset (fx, fy, fz) of the window's
 // center to the nearest sample in the window within Radius along each axis,
 // or Cap when none is nearer; as soon as one at `enough` or nearer is found,
@@ -394,12 +557,29 @@ inline unsigned vtkBlueNoiseRelaxation::CrowdedFaces(int reach) const
 void vtkBlueNoiseRelaxation::RelaxSample(int x, int y, int z, float g)
 {
   this->SetDensity(g);
-  this->Load(this->CurrentRows().Loaded, x, y);
+  const std::vector<RowRun>& loaded = this->CurrentRows().Loaded;
+  this->Load(loaded, x, y);
   this->Window[Reach * Span + Reach] &= ~(std::uint64_t(1) << 32); // not its own neighbor
-  const int current = this->Nearest(0, 0, 0, -1);
+  int current = this->Nearest(0, 0, 0, -1);
   if (current >= this->Limit)
   {
-    return;
+    return; // with samples of other densities in view: without them too
+  }
+  // Where densities are mixed, the samples of other densities leave the
+  // window. None of them fills a voxel the sample may move to: that voxel's
+  // density is within DensityTolerance of the sample's, so of a similar class.
+  if (this->Mixed)
+  {
+    const int cls = vtkBlueNoiseDensityClass::Of(g);
+    if (this->MixedAround(x, y, cls))
+    {
+      this->KeepSimilar(loaded, x, y, cls);
+      current = this->Nearest(0, 0, 0, -1);
+      if (current >= this->Limit)
+      {
+        return;
+      }
+    }
   }
   int order[6];
   FaceOrder(this->Seed, x, y, z, order);
@@ -519,7 +699,9 @@ void vtkBlueNoiseRelaxation::RelaxLayer(int z)
   {
     const Slot* near = this->Find(z + dz);
     this->Layers[dz + Reach] = near ? near->Bits.data() : this->NoSamples.data();
+    this->Slots[dz + Reach] = near;
   }
+  this->FindMixed();
   for (int dz = -1; dz <= 1; ++dz) // where samples may move to
   {
     const Plane* near = z + dz >= this->Finalized ? this->FindPlane(z + dz) : nullptr;
@@ -597,6 +779,7 @@ const std::vector<vtkBlueNoiseRelaxation::Layer>& vtkBlueNoiseRelaxation::Push(
       count += __builtin_popcountll(words[x0 >> 6]);
     }
   }
+  this->Classify(slot, density);
   if (!slot.Relaxable && this->Relaxed == z && this->Finalized == z)
   {
     // No layer before it waits, and no sample moves into or out of it: it is

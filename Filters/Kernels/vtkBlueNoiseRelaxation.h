@@ -15,7 +15,8 @@
  * a 128^3 cube), in an order given by a hash of the seed and the voxel (each
  * sample once; one that moved is not moved again): with s = g(p)^(-1/3) the mean spacing of
  * samples at that density and d(v) the distance from voxel v to the nearest
- * other sample within the search radius w = min(ceil(0.87 s) + 1, 8) voxels
+ * other sample of a similar density (below) within the search radius
+ * w = min(ceil(0.87 s) + 1, 8) voxels
  * (w + 1 when there is none), if d(p)^2 < 0.75 s^2, p moves to the one of its
  * six face neighbors c that is empty, has 0 < g(c) <= 1/4 and
  * |g(c) - g(p)| <= g(p) / 64, lies in the layers given (between the first
@@ -27,6 +28,15 @@
  * tolerance of 1/8). Moves to
  * the 6 face neighbors keep the spectrum isotropic (moves to the 26
  * neighbors reach a lower L(g) but add up to 0.8 dB of anisotropy).
+ *
+ * Similar densities: vtkBlueNoiseDensityClass::Similar, within a factor of
+ * about 4. The samples of a region next to a much denser one do not see the
+ * denser one's samples (nor the other way round): counted, they crowd the
+ * region's samples near the boundary, which all move away from it and leave
+ * a skin, empty at the boundary and too full a few voxels in, that shows in
+ * the region's spectrum (up to 2 dB of anisotropy at 4/255 next to ten
+ * times the density). A smooth gradient changes the density by far less
+ * than that factor over a search.
  *
  * On constant cubes it lowers L(g) below both the plain scan's and a
  * continuous Poisson-disk set's of the same count, lowers S(g) and leaves the
@@ -43,7 +53,8 @@
  * one after: a caller may hand them to another thread for a while. Memory:
  * the densities, masks and move flags (6 bytes a voxel) of the MaximumRadius
  * + 3 layers not yet final, made by the first layer that is not context, and
- * the masks as bits of 32 layers.
+ * the masks as bits of 32 layers, with their density classes per word of
+ * bits and, for a layer of more than one density, per voxel (a byte).
  *
  * The searches: the rows of bits around a sample (those its search and its
  * face neighbors' read) are copied into a window, 64 voxels wide, once per
@@ -121,6 +132,12 @@ private:
     int Z = 0;
     std::vector<std::uint64_t> Bits; // the mask, rows padded to whole words, zero rows around
     bool Relaxable = false;          // some density of the layer is in (0, 1/4]
+    // The classes (vtkBlueNoiseDensityClass) of the voxels of positive
+    // density: their lowest and highest, per word of Bits (Low > High where
+    // none) and in the layer; each voxel's only when they differ (else empty).
+    std::vector<unsigned char> WordLow, WordHigh;
+    int Low = 255, High = 0;
+    std::vector<unsigned char> Classes;
   };
   struct Plane // what can still change, for the layers not yet final
   {
@@ -155,6 +172,10 @@ private:
   };
   static RowSet MakeRows(int radius, int cap);
   void Load(const std::vector<RowRun>& runs, int x, int y);
+  void Classify(Slot& slot, const float* density);
+  bool MixedAround(int x, int y, int cls) const;
+  void FindMixed();
+  void KeepSimilar(const std::vector<RowRun>& runs, int x, int y, int cls);
   int Nearest(int fx, int fy, int fz, int enough) const;
   unsigned BlockedFaces(int x, int y) const;
   unsigned CrowdedFaces(int reach) const;
@@ -194,10 +215,17 @@ private:
   std::uint64_t Window[Span * Span];
   const std::uint64_t* Layers[Span]; // the bits of layers z - Reach ... z + Reach
   const float* Densities[3] = {};     // of layers z - 1, z, z + 1 where samples may move
+  const Slot* Slots[Span] = {};       // of layers z - Reach ... z + Reach (nullptr: none)
+  // Where the layer relaxed has samples of dissimilar densities within reach:
+  // per row and word, the lowest and highest class over the words within
+  // Reach rows and layers (Mixed false: nowhere, and these are not made).
+  bool Mixed = false;
+  std::vector<unsigned char> MixedLow, MixedHigh;
   std::vector<Slot> Ring;
   std::vector<Plane> Planes;
   std::vector<std::uint64_t> NoSamples; // the bits of a layer outside the ring
   std::vector<Layer> Done;
+  std::vector<unsigned char> ClassScratch; // a layer's classes, kept by its slot when mixed
   std::vector<std::uint64_t> Order; // hash and index of a layer's samples
   std::vector<std::uint64_t> Scratch; // for sorting Order
 };

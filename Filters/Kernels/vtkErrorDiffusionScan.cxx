@@ -1,6 +1,7 @@
 // SPDX-FileCopyrightText: Copyright (c) 2025-2026 the BlueNoiseSampling contributors
 // SPDX-License-Identifier: BSD-3-Clause
 #include "vtkErrorDiffusionScan.h"
+#include "vtkBlueNoiseDensityClass.h"
 
 
 #include <algorithm>
@@ -170,6 +171,7 @@ void vtkErrorDiffusionScan::Begin(int nx, int ny, int firstLayer)
   this->Carry = 0.0f;
   this->WarmedUp = false;
   this->TestedLayer = nullptr;
+  this->ClassedLayer = nullptr;
   this->Pitch = ErrorPitch(this->NX);
   const size_t layer = static_cast<size_t>(this->Pitch) * static_cast<size_t>(this->NY);
   this->Current.assign(layer, 0.0f);
@@ -226,6 +228,12 @@ void vtkErrorDiffusionScan::ReleaseLayerBuffers()
 {
   std::vector<float>().swap(this->Current);
   std::vector<float>().swap(this->Next);
+  for (auto* bytes : { &this->Interior, &this->InteriorWork, &this->ClassLow, &this->ClassHigh,
+         &this->ClassWork, &this->ClassCurrent, &this->ClassNext })
+  {
+    std::vector<unsigned char>().swap(*bytes);
+  }
+  this->ClassedLayer = nullptr;
 }
 
 //------------------------------------------------------------------------------
@@ -380,39 +388,6 @@ vtkIdType vtkErrorDiffusionScan::DrawLayerIndependently(
 //------------------------------------------------------------------------------
 namespace
 {
-// True when no voxel of the layer is saturated or empty. Fixed-size blocks
-// with a branch-free body, so the compiler vectorises them; the test still
-// stops at the first block with an inactive voxel.
-bool AllActive(const float* g, size_t n)
-{
-  constexpr size_t block = 256;
-  size_t i = 0;
-  for (; i + block <= n; i += block)
-  {
-    int inactive = 0;
-    for (size_t j = 0; j < block; ++j)
-    {
-      inactive |= static_cast<int>(!(g[i + j] > 0.0f)) | static_cast<int>(!(g[i + j] < 1.0f));
-    }
-    if (inactive)
-    {
-      return false;
-    }
-  }
-  for (; i < n; ++i)
-  {
-    if (!Active(g[i]))
-    {
-      return false;
-    }
-  }
-  return true;
-}
-}
-
-//------------------------------------------------------------------------------
-namespace
-{
 // The layer's reservoir: error that would go below a bottom face (a voxel
 // whose targets in the next layer are all inactive or missing) is shared by
 // the active voxels still to come in the layer, each getting share / count
@@ -437,16 +412,6 @@ struct Reservoir
   }
 };
 
-vtkIdType CountActive(const float* g, size_t n)
-{
-  vtkIdType count = 0;
-  for (size_t i = 0; i < n; ++i)
-  {
-    count += Active(g[i]) ? 1 : 0;
-  }
-  return count;
-}
-
 // How many voxels of a row from idx on (step d, `left` of them to the row's
 // end) take the fast path: those marked in `interior` when given, else all
 // but the row's last when the row is `fast` (away from the faces of a layer
@@ -467,12 +432,14 @@ int FastRun(const unsigned char* interior, vtkIdType idx, vtkIdType d, int left,
 }
 
 //------------------------------------------------------------------------------
-// The error e of voxel idx at a face of the volume or of the support: the
-// targets that exist and are active share it in proportion to their weights,
-// except that a share for the next layer with no active target there goes to
-// the reservoir. Returns the new carry (the share of the next voxel scanned).
+// The error e of voxel idx at a face of the volume, of the support or of a
+// density step: the targets that exist and are active share it in
+// proportion to their weights (those of a similar density only, when there
+// are such), except that a share for the next layer with no active target
+// there goes to the reservoir. Returns the new carry (the share of the next
+// voxel scanned).
 float vtkErrorDiffusionScan::SpreadAtFace(float e, const float w[6], const bool valid[6],
-  vtkIdType idx, vtkIdType d, vtkIdType v, void* reservoirPointer)
+  const bool similar[6], vtkIdType idx, vtkIdType d, vtkIdType v, void* reservoirPointer)
 {
   auto& reservoir = *static_cast<Reservoir*>(reservoirPointer);
   float* cur = this->Current.data();
@@ -489,6 +456,17 @@ float vtkErrorDiffusionScan::SpreadAtFace(float e, const float w[6], const bool 
   if (local != e)
   {
     targets = inLayerOnly;
+  }
+  bool alike[6];
+  bool anyAlike = false;
+  for (int t = 0; t < 6; ++t)
+  {
+    alike[t] = targets[t] && similar[t];
+    anyAlike = anyAlike || alike[t];
+  }
+  if (anyAlike)
+  {
+    targets = alike; // over a density step only when there is no other way
   }
   float sum = 0.0f;
   for (int t = 0; t < 6; ++t)
@@ -524,35 +502,63 @@ float vtkErrorDiffusionScan::SpreadAtFace(float e, const float w[6], const bool 
 }
 
 //------------------------------------------------------------------------------
-// Whether every voxel of the layer and of its successor is active (the fast
-// path); otherwise `active` receives the number of active voxels of the
-// layer. A layer is tested once, as the successor, and the answer reused when
-// it comes up as the current layer (the caller passes the same densities).
-bool vtkErrorDiffusionScan::TestLayers(const float* density, const float* next, vtkIdType& active)
+// How many voxels of the layer are active, and the lowest and highest of
+// their densities (high < low when none is). A branch-free body, so the
+// compiler vectorizes it.
+vtkErrorDiffusionScan::LayerRange vtkErrorDiffusionScan::RangeOf(const float* g, size_t n)
+{
+  LayerRange range;
+  vtkIdType active = 0;
+  float low = 1.0f, high = 0.0f;
+  for (size_t i = 0; i < n; ++i)
+  {
+    const bool on = Active(g[i]);
+    active += on ? 1 : 0;
+    low = std::min(low, on ? g[i] : 1.0f);
+    high = std::max(high, on ? g[i] : 0.0f);
+  }
+  range.Active = active;
+  range.Low = low;
+  range.High = high;
+  return range;
+}
+
+//------------------------------------------------------------------------------
+// Whether every voxel of the layer and of its successor is active and all
+// their densities are similar (the fast path); `active` receives the number
+// of active voxels of the layer, and `similar` whether the active densities
+// of both are all similar. A layer is tested once, as the successor, and the
+// answer reused when it comes up as the current layer (the caller passes the
+// same densities).
+bool vtkErrorDiffusionScan::TestLayers(
+  const float* density, const float* next, vtkIdType& active, bool& similar)
 {
   const size_t layerSize = static_cast<size_t>(this->NX) * this->NY;
-  const bool currentActive =
-    density == this->TestedLayer ? this->TestedLayerActive : AllActive(density, layerSize);
-  bool nextActive = false;
+  const vtkIdType all = static_cast<vtkIdType>(layerSize);
+  const LayerRange current = density == this->TestedLayer ? this->Tested : RangeOf(density, layerSize);
+  bool allActive = false;
+  float low = current.Low, high = current.High;
   if (next)
   {
-    nextActive = next == density ? currentActive : AllActive(next, layerSize);
+    const LayerRange following = next == density ? current : RangeOf(next, layerSize);
     this->TestedLayer = next;
-    this->TestedLayerActive = nextActive;
+    this->Tested = following;
+    allActive = current.Active == all && following.Active == all;
+    low = std::min(low, following.Low);
+    high = std::max(high, following.High);
   }
-  const bool allActive = currentActive && nextActive;
-  if (!allActive)
-  {
-    active = currentActive ? static_cast<vtkIdType>(layerSize) : CountActive(density, layerSize);
-  }
-  return allActive;
+  similar = high < low || vtkBlueNoiseDensityClass::Similar(low, high);
+  active = current.Active;
+  return allActive && similar;
 }
 
 //------------------------------------------------------------------------------
 // Interior = the 3x3 erosion of "active here and in the next layer", with
-// the outside of the layer inactive: byte loops the compiler vectorizes, in
-// memory order whatever the orientation of the scan.
-const unsigned char* vtkErrorDiffusionScan::FindInterior(const float* density, const float* next)
+// the outside of the layer inactive, and with `steps` of "of densities
+// similar to one another" too: byte loops the compiler vectorizes, in memory
+// order whatever the orientation of the scan.
+const unsigned char* vtkErrorDiffusionScan::FindInterior(
+  const float* density, const float* next, bool steps)
 {
   const size_t nx = static_cast<size_t>(this->NX), ny = static_cast<size_t>(this->NY);
   const size_t layer = nx * ny;
@@ -586,7 +592,83 @@ const unsigned char* vtkErrorDiffusionScan::FindInterior(const float* density, c
     eroded[i] = rows[i - nx] & rows[i] & rows[i + nx];
   }
   std::swap(this->Interior, this->InteriorWork);
+  if (steps)
+  {
+    this->KeepSimilarInterior(density, next);
+  }
   return this->Interior.data();
+}
+
+//------------------------------------------------------------------------------
+namespace
+{
+void ClassesOf(const float* g, size_t n, std::vector<unsigned char>& classes)
+{
+  classes.resize(n);
+  for (size_t i = 0; i < n; ++i)
+  {
+    std::uint32_t bits;
+    std::memcpy(&bits, g + i, sizeof(bits));
+    classes[i] = static_cast<unsigned char>(vtkBlueNoiseDensityClass::OfBits(bits));
+  }
+}
+}
+
+//------------------------------------------------------------------------------
+// Clears from Interior the voxels whose 3x3 neighborhood in the layer and the
+// next holds densities that are not all similar: the lowest and highest
+// class of each neighborhood by separable erosions.
+void vtkErrorDiffusionScan::KeepSimilarInterior(const float* density, const float* next)
+{
+  const size_t nx = static_cast<size_t>(this->NX), ny = static_cast<size_t>(this->NY);
+  const size_t layer = nx * ny;
+  this->ClassLow.resize(layer);
+  this->ClassHigh.resize(layer);
+  this->ClassWork.resize(layer);
+  unsigned char* low = this->ClassLow.data();
+  unsigned char* high = this->ClassHigh.data();
+  unsigned char* work = this->ClassWork.data();
+  // The next layer's classes are kept for its turn as the current one.
+  if (this->ClassedLayer != density)
+  {
+    ClassesOf(density, layer, this->ClassNext);
+  }
+  std::swap(this->ClassCurrent, this->ClassNext);
+  ClassesOf(next, layer, this->ClassNext);
+  this->ClassedLayer = next;
+  const unsigned char* a = this->ClassCurrent.data();
+  const unsigned char* b = this->ClassNext.data();
+  for (size_t i = 0; i < layer; ++i)
+  {
+    low[i] = std::min(a[i], b[i]);
+    high[i] = std::max(a[i], b[i]);
+  }
+  const auto erode = [&](unsigned char* values, bool lowest) {
+    for (size_t y = 0; y < ny; ++y) // along x, into work
+    {
+      const unsigned char* k = values + y * nx;
+      unsigned char* h = work + y * nx;
+      h[0] = k[0];
+      h[nx - 1] = k[nx - 1];
+      for (size_t x = 1; x + 1 < nx; ++x)
+      {
+        h[x] = lowest ? std::min(std::min(k[x - 1], k[x]), k[x + 1])
+                      : std::max(std::max(k[x - 1], k[x]), k[x + 1]);
+      }
+    }
+    for (size_t i = nx; i + nx < layer; ++i) // along y, back
+    {
+      values[i] = lowest ? std::min(std::min(work[i - nx], work[i]), work[i + nx])
+                         : std::max(std::max(work[i - nx], work[i]), work[i + nx]);
+    }
+  };
+  erode(low, true);
+  erode(high, false);
+  unsigned char* interior = this->Interior.data();
+  for (size_t i = 0; i < layer; ++i)
+  {
+    interior[i] &= static_cast<unsigned char>(vtkBlueNoiseDensityClass::Alike(low[i], high[i]));
+  }
 }
 
 //------------------------------------------------------------------------------
@@ -660,10 +742,17 @@ vtkIdType vtkErrorDiffusionScan::ScanLayer(
 {
   const bool nextLayerExists = next != nullptr;
   Reservoir reservoir;
-  const bool allActive = this->TestLayers(density, next, reservoir.Remaining);
-  // Where there are inactive voxels, the fast path still serves the voxels
-  // whose neighborhood is active: the bulk of any real volume's support.
-  const unsigned char* interior = allActive || !next ? nullptr : this->FindInterior(density, next);
+  bool similar = true;
+  const bool allActive = this->TestLayers(density, next, reservoir.Remaining, similar);
+  // Where there are inactive voxels or density steps, the fast path still
+  // serves the voxels whose neighborhood is active and of similar densities:
+  // the bulk of any real volume's support.
+  const unsigned char* interior =
+    allActive || !next ? nullptr : this->FindInterior(density, next, !similar);
+  if (!interior || similar)
+  {
+    this->ClassedLayer = nullptr; // the classes kept are of no layer to come
+  }
   const LayerScan s = GetLayerScan(this->NX, this->NY, layer);
   const LayerScan es = GetLayerScan(this->NX, this->NY, layer, this->Pitch);
   this->SeedLayer(layer);
@@ -726,13 +815,20 @@ vtkIdType vtkErrorDiffusionScan::ScanLayer(
       --reservoir.Remaining;
       const bool hasPrevU = p > 0;
       const bool hasNextU = p + 1 < s.NU;
-      const bool valid[6] = { hasNextU && Active(density[idx + d]),
-        hasPrevU && hasNextRow && Active(density[idx - d + V]),
-        hasNextRow && Active(density[idx + V]),
-        hasPrevRow && nextLayerExists && Active(next[idx - V]),
-        hasPrevU && nextLayerExists && Active(next[idx - d]),
-        nextLayerExists && Active(next[idx]) };
-      state.Carry = this->SpreadAtFace(e, state.Level.Weights, valid, eidx, ed, EV, &reservoir);
+      const float targets[6] = { hasNextU ? density[idx + d] : 0.0f,
+        hasPrevU && hasNextRow ? density[idx - d + V] : 0.0f,
+        hasNextRow ? density[idx + V] : 0.0f,
+        hasPrevRow && nextLayerExists ? next[idx - V] : 0.0f,
+        hasPrevU && nextLayerExists ? next[idx - d] : 0.0f,
+        nextLayerExists ? next[idx] : 0.0f };
+      bool valid[6], alike[6];
+      for (int t = 0; t < 6; ++t)
+      {
+        valid[t] = Active(targets[t]);
+        alike[t] = vtkBlueNoiseDensityClass::Similar(g, targets[t]);
+      }
+      state.Carry =
+        this->SpreadAtFace(e, state.Level.Weights, valid, alike, eidx, ed, EV, &reservoir);
     }
   }
   this->Carry = state.Carry;

@@ -60,6 +60,15 @@
  * this for the targets in the next layer is why ProcessLayer needs that
  * layer's densities.
  *
+ * Density steps. Of its active targets, a voxel's error goes only to those
+ * of a similar density (vtkBlueNoiseDensityClass::Similar, within a factor
+ * of about 4), when it has any: a region next to a much denser or sparser one is sampled
+ * like a region of its own, its rim like its inside. Error carried over such
+ * a step (up to half a point, many voxels' worth of the sparse side's
+ * density) would fire the sparse side's first voxels at once: twice its
+ * density in the voxels along the step and too few just behind. Within a
+ * smooth gradient neighbors are always similar.
+ *
  * Exact counts. No error is lost: a voxel with no active target (an isolated
  * voxel, the end of the last row of a support) passes its error on to the
  * next active voxel of the scan, and the last layer (nextDensity == nullptr)
@@ -205,7 +214,8 @@ public:
    */
   double GetCarriedError() const;
 
-  /// Frees the error buffers of a run that is over (Begin makes them again).
+  /// Frees the buffers of a run that is over: the error, the interior and the
+  /// density classes of its layers (Begin and the scan make them again).
   void ReleaseLayerBuffers();
 
   /**
@@ -268,9 +278,9 @@ private:
   // Record keeps in Current what each voxel received (MeasureReceivedError).
   template <bool Record = false>
   vtkIdType ScanLayer(const float* density, const float* next, unsigned char* mask, int layer);
-  bool TestLayers(const float* density, const float* next, vtkIdType& active);
-  float SpreadAtFace(float e, const float w[6], const bool valid[6], vtkIdType idx, vtkIdType d,
-    vtkIdType v, void* reservoir);
+  bool TestLayers(const float* density, const float* next, vtkIdType& active, bool& similar);
+  float SpreadAtFace(float e, const float w[6], const bool valid[6], const bool similar[6],
+    vtkIdType idx, vtkIdType d, vtkIdType v, void* reservoir);
   vtkIdType DrawLayerIndependently(const float* density, unsigned char* mask);
   void EndLayer();
   void SeedLayer(int layer);
@@ -296,13 +306,27 @@ private:
   // Parameters by density, indexed by the top bits of min(g, 1 - g) as a
   // float (2^-8 relative steps); filled as densities come up.
   std::vector<LevelParameters> ParameterTable;
-  // In a layer with inactive voxels: 1 where the voxel's 3x3 neighborhood is
-  // active in the layer and the next (all six targets are then active).
+  // In a layer with inactive voxels or density steps: 1 where the voxel's 3x3
+  // neighborhood is active in the layer and the next (all six targets are
+  // then active) and, with `steps`, of densities similar to one another.
   std::vector<unsigned char> Interior;
   std::vector<unsigned char> InteriorWork;
-  const unsigned char* FindInterior(const float* density, const float* next); // Interior
-  const float* TestedLayer = nullptr; // the last successor layer tested, and whether
-  bool TestedLayerActive = false;     // all of its voxels were active
+  std::vector<unsigned char> ClassLow, ClassHigh, ClassWork;
+  std::vector<unsigned char> ClassCurrent, ClassNext; // of the layer and the next
+  const float* ClassedLayer = nullptr;                // the densities ClassNext is of
+  const unsigned char* FindInterior(const float* density, const float* next, bool steps);
+  void KeepSimilarInterior(const float* density, const float* next);
+  // The last successor layer tested: how many of its voxels are active, and
+  // the lowest and highest of their densities.
+  struct LayerRange
+  {
+    vtkIdType Active = 0;
+    float Low = 1.0f; // High < Low when none is active
+    float High = 0.0f;
+  };
+  static LayerRange RangeOf(const float* g, size_t n);
+  const float* TestedLayer = nullptr;
+  LayerRange Tested;
 };
 
 #endif

@@ -33,6 +33,7 @@ bluenoise_add_test(TestErrorDiffusionPointAssembler LABELS sampler)
 bluenoise_add_test(TestErrorDiffusionSamplerRim LABELS sampler data LIBS VTK::IOImage VTK::vtksys)
 set_tests_properties(TestErrorDiffusionSamplerRim PROPERTIES SKIP_RETURN_CODE 125)
 bluenoise_add_test(TestErrorDiffusionSamplerLocalDensity LABELS sampler)
+bluenoise_add_test(TestErrorDiffusionSamplerDensitySteps LABELS sampler)
 bluenoise_add_test(TestErrorDiffusionSamplerStreaming LABELS sampler threads LIBS VTK::ImagingCore)
 # 150 updates of one sampler in a pipeline: random settings, aborts and bad
 # settings; under the asan stage with leak detection.

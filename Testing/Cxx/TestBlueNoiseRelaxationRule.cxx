@@ -9,6 +9,7 @@
 // the relaxed masks must be the same bit for bit, and the counts kept (in
 // all, and in each layer returned).
 #include "BlueNoiseTestUtilities.h"
+#include "vtkBlueNoiseDensityClass.h"
 #include "vtkBlueNoiseRelaxation.h"
 
 #include <algorithm>
@@ -40,8 +41,8 @@ bool Relaxable(float g)
 }
 
 // min(cap, squared distance from (x, y, z) to the nearest sample other than
-// `except` in the box of half-width `radius`).
-int Nearest(const Volume& v, int x, int y, int z, int radius, int cap, const int except[3])
+// `except` in the box of half-width `radius` whose density is similar to g).
+int Nearest(const Volume& v, int x, int y, int z, int radius, int cap, const int except[3], float g)
 {
   int best = cap;
   for (int dz = -radius; dz <= radius; ++dz)
@@ -52,7 +53,8 @@ int Nearest(const Volume& v, int x, int y, int z, int radius, int cap, const int
       {
         const int X = x + dx, Y = y + dy, Z = z + dz;
         if (v.Inside(X, Y, Z) && v.Mask[v.Index(X, Y, Z)] &&
-          !(X == except[0] && Y == except[1] && Z == except[2]))
+          !(X == except[0] && Y == except[1] && Z == except[2]) &&
+          vtkBlueNoiseDensityClass::Similar(v.Density[v.Index(X, Y, Z)], g))
         {
           best = std::min(best, dx * dx + dy * dy + dz * dz);
         }
@@ -73,7 +75,7 @@ void RelaxSample(Volume& v, std::vector<unsigned char>& moved, int x, int y, int
   const int cap =
     static_cast<int>(std::min(std::ceil(limit), static_cast<double>((radius + 1) * (radius + 1))));
   const int p[3] = { x, y, z };
-  const int current = Nearest(v, x, y, z, radius, cap, p);
+  const int current = Nearest(v, x, y, z, radius, cap, p, g);
   if (current >= limit)
   {
     return;
@@ -93,7 +95,7 @@ void RelaxSample(Volume& v, std::vector<unsigned char>& moved, int x, int y, int
     {
       continue;
     }
-    const int d = Nearest(v, X, Y, Z, radius, cap, p);
+    const int d = Nearest(v, X, Y, Z, radius, cap, p, g);
     if (d > best)
     {
       best = d;
