@@ -597,8 +597,8 @@ def section_quality(opts, scratch):
     out += table(['g'] + [QUALITY_NAMES[m] for m in methods], rows)
     out += ['(bold: the lowest but white noise\'s and the default\'s in a varying volume.)',
             'The default\'s L(g) against each method, in % of that method\'s (negative: the',
-            'default is lower); "=" where the two',
-            'differ by less than the larger standard deviation:', '']
+            'default is lower); "=" where the two differ by less than the larger standard',
+            'deviation:', '']
     rows = []
     for m in methods:
         if m == 'Relaxed':
