@@ -398,7 +398,10 @@ void vtkBlueNoiseRelaxation::FindMixed()
     return;
   }
   const size_t words = this->NoSamples.size();
-  std::vector<unsigned char> low1(words, 255), high1(words, 0); // over the layers
+  std::vector<unsigned char>& low1 = this->MixedLayersLow; // over the layers
+  std::vector<unsigned char>& high1 = this->MixedLayersHigh;
+  low1.assign(words, 255);
+  high1.assign(words, 0);
   for (const Slot* slot : this->Slots)
   {
     if (!slot)

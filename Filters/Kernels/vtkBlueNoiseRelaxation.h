@@ -221,6 +221,7 @@ private:
   // Reach rows and layers (Mixed false: nowhere, and these are not made).
   bool Mixed = false;
   std::vector<unsigned char> MixedLow, MixedHigh;
+  std::vector<unsigned char> MixedLayersLow, MixedLayersHigh; // over the layers only
   std::vector<Slot> Ring;
   std::vector<Plane> Planes;
   std::vector<std::uint64_t> NoSamples; // the bits of a layer outside the ring

@@ -3,10 +3,13 @@
 #include "vtkErrorDiffusionScan.h"
 #include "vtkBlueNoiseDensityClass.h"
 
-
 #include <algorithm>
 #include <cmath>
 #include <cstring>
+
+#if defined(__SSE2__)
+#include <emmintrin.h>
+#endif
 
 namespace
 {
@@ -508,18 +511,49 @@ float vtkErrorDiffusionScan::SpreadAtFace(float e, const float w[6], const bool 
 vtkErrorDiffusionScan::LayerRange vtkErrorDiffusionScan::RangeOf(const float* g, size_t n)
 {
   LayerRange range;
-  vtkIdType active = 0;
-  float low = 1.0f, high = 0.0f;
-  for (size_t i = 0; i < n; ++i)
+  size_t i = 0;
+#if defined(__SSE2__)
+  // Four at a time (the compiler does not vectorize the comparisons by
+  // itself: they may trap); the counts per lane in blocks that fit an int.
+  const __m128 zero = _mm_setzero_ps();
+  const __m128 one = _mm_set1_ps(1.0f);
+  __m128 low = one, high = zero;
+  constexpr size_t block = size_t(1) << 20;
+  while (i + 4 <= n)
   {
-    const bool on = Active(g[i]);
-    active += on ? 1 : 0;
-    low = std::min(low, on ? g[i] : 1.0f);
-    high = std::max(high, on ? g[i] : 0.0f);
+    const size_t end = std::min(n, i + block) & ~size_t(3);
+    __m128i count = _mm_setzero_si128();
+    for (; i < end; i += 4)
+    {
+      const __m128 v = _mm_loadu_ps(g + i);
+      const __m128 on = _mm_and_ps(_mm_cmpgt_ps(v, zero), _mm_cmplt_ps(v, one));
+      low = _mm_min_ps(low, _mm_or_ps(_mm_and_ps(on, v), _mm_andnot_ps(on, one)));
+      high = _mm_max_ps(high, _mm_and_ps(on, v));
+      count = _mm_sub_epi32(count, _mm_castps_si128(on)); // an active lane is -1
+    }
+    alignas(16) std::int32_t counts[4];
+    _mm_store_si128(reinterpret_cast<__m128i*>(counts), count);
+    range.Active += static_cast<vtkIdType>(counts[0]) + counts[1] + counts[2] + counts[3];
   }
-  range.Active = active;
-  range.Low = low;
-  range.High = high;
+  alignas(16) float lows[4], highs[4];
+  _mm_store_ps(lows, low);
+  _mm_store_ps(highs, high);
+  for (int k = 0; k < 4; ++k)
+  {
+    range.Low = std::min(range.Low, lows[k]);
+    range.High = std::max(range.High, highs[k]);
+  }
+#endif
+  for (; i < n; ++i)
+  {
+    const float v = g[i];
+    if (Active(v))
+    {
+      ++range.Active;
+      range.Low = std::min(range.Low, v);
+      range.High = std::max(range.High, v);
+    }
+  }
   return range;
 }
 
@@ -643,8 +677,12 @@ void vtkErrorDiffusionScan::KeepSimilarInterior(const float* density, const floa
     low[i] = std::min(a[i], b[i]);
     high[i] = std::max(a[i], b[i]);
   }
-  const auto erode = [&](unsigned char* values, bool lowest) {
-    for (size_t y = 0; y < ny; ++y) // along x, into work
+  // 3x3 minimum (of the low classes) and maximum (of the high ones): along
+  // x into work, then along y back; a loop each, so that they vectorize.
+  const auto lower = [](unsigned char a, unsigned char b) { return std::min(a, b); };
+  const auto higher = [](unsigned char a, unsigned char b) { return std::max(a, b); };
+  const auto erode = [&](unsigned char* values, auto pick) {
+    for (size_t y = 0; y < ny; ++y)
     {
       const unsigned char* k = values + y * nx;
       unsigned char* h = work + y * nx;
@@ -652,18 +690,16 @@ void vtkErrorDiffusionScan::KeepSimilarInterior(const float* density, const floa
       h[nx - 1] = k[nx - 1];
       for (size_t x = 1; x + 1 < nx; ++x)
       {
-        h[x] = lowest ? std::min(std::min(k[x - 1], k[x]), k[x + 1])
-                      : std::max(std::max(k[x - 1], k[x]), k[x + 1]);
+        h[x] = pick(pick(k[x - 1], k[x]), k[x + 1]);
       }
     }
-    for (size_t i = nx; i + nx < layer; ++i) // along y, back
+    for (size_t i = nx; i + nx < layer; ++i)
     {
-      values[i] = lowest ? std::min(std::min(work[i - nx], work[i]), work[i + nx])
-                         : std::max(std::max(work[i - nx], work[i]), work[i + nx]);
+      values[i] = pick(pick(work[i - nx], work[i]), work[i + nx]);
     }
   };
-  erode(low, true);
-  erode(high, false);
+  erode(low, lower);
+  erode(high, higher);
   unsigned char* interior = this->Interior.data();
   for (size_t i = 0; i < layer; ++i)
   {
