@@ -369,7 +369,7 @@ void vtkBlueNoiseRelaxation::Classify(Slot& slot, const float* density)
   slot.High = high;
   if (low < high)
   {
-    slot.Classes.assign(classes, classes + layer);
+    slot.Classes.swap(this->ClassScratch); // the slot's old buffer is the next scratch
   }
   else
   {
