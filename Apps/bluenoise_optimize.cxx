@@ -5,10 +5,12 @@
 // diffusion coefficients and m(g) with Nelder-Mead, starting from a table's
 // parameters at that level, and writes the result as a parameter table that
 // the sampler's Custom parameter set reads, with T, L, S per level as comments.
+// --relaxed measures the default method (the scan's samples relaxed);
+// --keep-symmetry minimizes L(g) among the parameters of at most the start's S(g).
 //
 //   bluenoise-optimize [--output FILE] [--size L] [--seeds K] [--weight W]
 //                      [--evaluations N] [--levels 1,8,16,...] [--start paper|fixed|FILE]
-//                      [--threads T] [--resume]
+//                      [--threads T] [--relaxed] [--keep-symmetry] [--resume]
 #include "bluenoise_options.h"
 #include "vtkErrorDiffusionOptimizer.h"
 #include "vtkErrorDiffusionParameterTable.h"
@@ -61,6 +63,10 @@ int ParseOptions(int argc, char* argv[], Options& o)
   cli.AddLevels(o.Levels);
   cli.AddText("--start", o.Start, "SET|FILE", "start parameters: paper, fixed or a parameter table file");
   cli.AddInteger("--threads", o.Threads, 1, 1024, "levels optimized in parallel");
+  cli.AddFlag("--relaxed", o.Settings.Relaxed,
+    "measure the default method: the scan's samples after the relaxation pass");
+  cli.AddFlag("--keep-symmetry", o.Settings.KeepSymmetry,
+    "minimize L(g) instead of T(g), with S(g) held at or below the start's");
   cli.AddFlag("--resume", o.Resume, "keep the levels already in the --output table, do the others");
   return cli.Parse(argc, argv);
 }
@@ -198,13 +204,20 @@ std::string TableHeader(const Options& o)
 {
   const auto& settings = o.Settings;
   std::ostringstream header;
-  header << "Optimized by bluenoise-optimize: minimum of T = w L + (1 - w) S per level\n"
+  header << "Optimized by bluenoise-optimize: "
+         << (settings.KeepSymmetry ? "minimum of L, S at most the start's,"
+                                   : "minimum of T = w L + (1 - w) S")
+         << " per level\n"
          << "cube " << settings.GridSize << "^3, seeds 0.." << settings.Seeds - 1
          << " averaged, w = " << settings.Weight << ", Nelder-Mead budget "
          << settings.MaximumEvaluations << " per level, start " << o.Start
          << ", ModulationScale " << settings.ModulationScale << ", steady-state boundaries;\n"
          << "interior: the same seeds with the faces cropped by " << settings.CropFaces
          << " voxels";
+  if (settings.Relaxed)
+  {
+    header << ";\nmeasured after the relaxation pass (the default method)";
+  }
   return header.str();
 }
 

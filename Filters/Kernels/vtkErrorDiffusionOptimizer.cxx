@@ -2,6 +2,7 @@
 // SPDX-License-Identifier: BSD-3-Clause
 #include "vtkErrorDiffusionOptimizer.h"
 
+#include "vtkBlueNoiseRelaxation.h"
 #include "vtkBlueNoiseSpectrumKernel.h"
 #include "vtkErrorDiffusionKernel.h"
 #include "vtkNelderMeadMinimizer.h"
@@ -29,6 +30,27 @@ vtkErrorDiffusionOptimizer::Metrics ToMetrics(
     m.AnisotropyDB += r.AnisotropyDB[s] / static_cast<double>(shells);
   }
   return m;
+}
+
+// The default method's relaxation of a sampled cube, in place.
+void Relax(const std::vector<float>& density, int n, std::uint64_t seed, std::vector<unsigned char>& mask)
+{
+  const size_t layer = static_cast<size_t>(n) * n;
+  std::vector<unsigned char> relaxed(mask.size());
+  const auto keep = [&](const std::vector<vtkBlueNoiseRelaxation::Layer>& done) {
+    for (const auto& l : done)
+    {
+      std::copy(l.Mask, l.Mask + layer, relaxed.begin() + l.Z * layer);
+    }
+  };
+  vtkBlueNoiseRelaxation relaxation;
+  relaxation.Begin(n, n, 0, seed);
+  for (int z = 0; z < n; ++z)
+  {
+    keep(relaxation.Push(z, density.data(), mask.data() + z * layer));
+  }
+  keep(relaxation.Flush());
+  mask.swap(relaxed);
 }
 
 // Samples the cube once per seed and feeds the spectra (whole, and cropped
@@ -59,6 +81,10 @@ bool Measure(const vtkErrorDiffusionParameterTable& table, double level,
     for (int z = 0; z < n; ++z)
     {
       kernel.ProcessLayer(density.data(), z + 1 < n ? density.data() : nullptr, mask.data() + z * layer);
+    }
+    if (settings.Relaxed)
+    {
+      Relax(density, n, static_cast<std::uint64_t>(settings.FirstSeed + s), mask);
     }
     if (!whole.AddRealization(mask.data(), error))
     {
@@ -238,11 +264,6 @@ vtkErrorDiffusionOptimizer::LevelResult vtkErrorDiffusionOptimizer::OptimizeLeve
     metrics = ToMetrics(r, n);
     return true;
   };
-  auto objective = [&](const std::vector<double>& x) {
-    Metrics m;
-    return metricsOf(toKey(x), m) ? m.Target : std::numeric_limits<double>::infinity();
-  };
-
   std::vector<double> x0(7), steps(7);
   for (int c = 0; c < 6; ++c)
   {
@@ -251,6 +272,32 @@ vtkErrorDiffusionOptimizer::LevelResult vtkErrorDiffusionOptimizer::OptimizeLeve
   }
   x0[6] = std::abs(start.Modulation);
   steps[6] = 0.15;
+  result.Start = toKey(x0);
+  metricsOf(result.Start, result.StartMetrics);
+  const Metrics& from = result.StartMetrics;
+
+  auto objective = [&](const std::vector<double>& x) {
+    Metrics m;
+    if (!metricsOf(toKey(x), m))
+    {
+      return std::numeric_limits<double>::infinity();
+    }
+    if (!settings.KeepSymmetry)
+    {
+      return m.Target;
+    }
+    // L relative to the start's. A point of more S than the start's ranks
+    // behind the start (so the best point never has more), and the more so
+    // the more S it has, which leads the simplex back.
+    const double low = from.LowFrequencyRatio > 0.0 ? from.LowFrequencyRatio : 1.0;
+    const double relative = m.LowFrequencyRatio / low;
+    if (m.Symmetry <= from.Symmetry)
+    {
+      return relative;
+    }
+    const double excess = from.Symmetry > 0.0 ? m.Symmetry / from.Symmetry - 1.0 : 1.0;
+    return 1.0 + relative + 10.0 * excess;
+  };
 
   vtkNelderMeadMinimizer minimizer;
   minimizer.SetMaximumEvaluations(settings.MaximumEvaluations);
@@ -261,8 +308,6 @@ vtkErrorDiffusionOptimizer::LevelResult vtkErrorDiffusionOptimizer::OptimizeLeve
   }
   const auto best = minimizer.Minimize(objective, x0, steps);
   result.Evaluations = best.Evaluations;
-  result.Start = toKey(x0);
-  metricsOf(result.Start, result.StartMetrics);
   result.Optimized = toKey(best.Point);
   double total = 0.0;
   for (double a : result.Optimized.Coefficients)

@@ -19,6 +19,14 @@
  * absolute value), minimized with vtkNelderMeadMinimizer from a start key
  * (typically the Table 1 parameters at that level).
  *
+ * Relaxed: the samples are measured after vtkBlueNoiseRelaxation's pass,
+ * as the default method (relaxed error diffusion) gives them, so that a
+ * table can be searched for that method.
+ *
+ * KeepSymmetry: the objective is L(g) alone, among the parameters whose S(g)
+ * is at most the start point's (a point of more S ranks behind the start,
+ * so the result never has more S than the start; T then falls with L).
+ *
  * Evaluate() measures any parameter table at any level with the same recipe;
  * it also reports the interior figures (faces cropped by CropFaces voxels).
  */
@@ -44,6 +52,8 @@ public:
     double ModulationScale = 0.5;
     int WarmUpLayers = 8;
     int CropFaces = 8;        ///< for the interior figures of Evaluate()
+    bool Relaxed = false;     ///< measure after the default method's relaxation
+    bool KeepSymmetry = false; ///< minimize L(g), S(g) held at most the start's
   };
 
   struct Metrics

@@ -2,7 +2,8 @@
 // SPDX-License-Identifier: BSD-3-Clause
 // The parameter optimizer on a tiny grid with a tiny budget lowers T(g) from
 // its start point, returns normalized coefficients, and its figures agree with
-// Evaluate() on the same settings (one metric implementation).
+// Evaluate() on the same settings (one metric implementation). Relaxed
+// measures the relaxed samples; KeepSymmetry lowers L without raising S.
 #include "BlueNoiseTestUtilities.h"
 #include "vtkErrorDiffusionOptimizer.h"
 
@@ -45,6 +46,35 @@ int main()
   Check(std::abs(e.Whole.Target - r.OptimizedMetrics.Target) < 1e-12,
     "Evaluate agrees with the optimizer");
   Check(e.Interior.Points > 0 && e.Interior.Points < e.Whole.Points, "interior figures computed");
+
+  // Relaxed: the default method's samples, as many as the scan's, and with
+  // less low-frequency energy.
+  vtkErrorDiffusionOptimizer::Settings relaxed = settings;
+  relaxed.GridSize = 32;
+  const auto optimized = vtkErrorDiffusionParameterTable::Optimized();
+  vtkErrorDiffusionOptimizer::Evaluation scan, moved;
+  Check(vtkErrorDiffusionOptimizer::Evaluate(optimized, 8, relaxed, scan, false, &error),
+    "Evaluate, scan: " + error);
+  relaxed.Relaxed = true;
+  Check(vtkErrorDiffusionOptimizer::Evaluate(optimized, 8, relaxed, moved, false, &error),
+    "Evaluate, relaxed: " + error);
+  std::cout << "L(8/255), 32^3: scan " << scan.Whole.LowFrequencyRatio << ", relaxed "
+            << moved.Whole.LowFrequencyRatio << std::endl;
+  Check(moved.Whole.Points == scan.Whole.Points, "the relaxation keeps the count");
+  Check(moved.Whole.LowFrequencyRatio < 0.9 * scan.Whole.LowFrequencyRatio,
+    "the relaxation lowers L");
+
+  // KeepSymmetry: L lowered, S not raised above the start's.
+  relaxed.KeepSymmetry = true;
+  relaxed.MaximumEvaluations = 40;
+  const auto k = vtkErrorDiffusionOptimizer::OptimizeLevel(
+    8, vtkErrorDiffusionOptimizer::KeyAt(optimized, 8), relaxed);
+  std::cout << "KeepSymmetry at 8/255: L " << k.StartMetrics.LowFrequencyRatio << " -> "
+            << k.OptimizedMetrics.LowFrequencyRatio << ", S " << k.StartMetrics.Symmetry << " -> "
+            << k.OptimizedMetrics.Symmetry << std::endl;
+  Check(k.OptimizedMetrics.LowFrequencyRatio < k.StartMetrics.LowFrequencyRatio, "L lowered");
+  Check(k.OptimizedMetrics.Symmetry <= k.StartMetrics.Symmetry, "S not above the start's");
+
   // Bad settings are refused.
   settings.GridSize = 2;
   Check(!vtkErrorDiffusionOptimizer::Evaluate(vtkErrorDiffusionParameterTable::Paper(), 16,
