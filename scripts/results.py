@@ -254,11 +254,11 @@ def section_sampler(opts, scratch):
                 '^BM_Filter/L:256/g255:(8|127)/float:[01]/busy:0/thread:1/')
         reps = 1
     else:
-        filt = '^BM_(Kernel|Relaxation|Filter)/'
+        filt = '^BM_(Kernel|Relaxation|Filter|Steps)/'
         reps = 3
     date, where = now(), machine()
     cmd, runs = benchmark(opts.build, 'BenchmarkErrorDiffusionSampler', filt, reps, opts.quick, scratch)
-    kernel, relax, filt_runs = [], [], {}
+    kernel, relax, filt_runs, steps = [], [], {}, {}
     for key, rs in runs.items():
         fam, a = named_args(key)
         if fam == 'BM_Kernel':
@@ -267,6 +267,8 @@ def section_sampler(opts, scratch):
             relax.append((a['L'], a['g255'], rs))
         elif fam == 'BM_Filter':
             filt_runs[(a['L'], a['g255'], a['float'], a['busy'], a['thread'], a['method'])] = rs
+        elif fam == 'BM_Steps':
+            steps[a['method']] = rs
     out = provenance(date, where, [cmd], build_description(
         opts.build, os.path.join(opts.build, 'bin', 'BenchmarkErrorDiffusionSampler')),
         'quick (the 256^3 cases, one repetition, one iteration each)' if opts.quick
@@ -326,6 +328,18 @@ def section_sampler(opts, scratch):
                 'is relaxed and the two do the same work, so there the ratio is the spread of',
                 'the machine):', '']
         out += table(['input', 'cube', 'g', 'default / paper\'s'], rows, ['---'] * 3 + ['---:'])
+    rows = [[name, ms([seconds(b) for b in steps[m]]), spread([b['x_tight'] for b in steps[m]])]
+            for m, name in ((2, 'default'), (0, 'paper\'s')) if m in steps]
+    if rows:
+        ratio = ''
+        if len(rows) == 2:
+            ratio = ' The default method\'s time / the paper\'s: %.2f (medians).' % (
+                statistics.median(seconds(b) for b in steps[2]) /
+                statistics.median(seconds(b) for b in steps[0]))
+        out += ['A volume of density steps (`BM_Steps`): 256^3 uint8 of 8^3 blocks, each of a',
+                'value drawn from 2 .. 64 (densities value / 255), the budget the sum of the',
+                'densities; x_tight against the tight loop on the same volume.' + ratio, '']
+        out += table(['method', 'ms (median)', 'x_tight'], rows, ['---', '---:', '---:'])
     rows = []
     for L, g, rs in sorted(relax):
         rows.append(['%d^3' % L, g_label(g), ms([seconds(b) for b in rs]),

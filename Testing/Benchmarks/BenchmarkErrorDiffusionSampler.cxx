@@ -8,8 +8,9 @@
 // default settings but for the identity mapping (a constant cube has no
 // scalar range): a point budget of g * voxels, the worker thread when more
 // than one thread is allowed, the default method or the paper's; the kernel
-// alone; the relaxation pass alone, on the kernel's samples; and the filter
-// with another process busy on every core ("busy").
+// alone; the relaxation pass alone, on the kernel's samples; the filter
+// with another process busy on every core ("busy"); and a volume of density
+// steps (BM_Steps).
 // Counters: voxels/s, and x_tight = the tight loop's time / this time (the
 // tight loop timed, fastest of 3, right before the case and, for the filter,
 // right after it too, under the same load).
@@ -64,8 +65,9 @@ struct Pcg32
 // It does: layers along z, the serpentine of each layer turned by 90 degrees
 // per layer (the kernel's GetLayerScan), the threshold 0.5 +- s r m(g) with
 // s = 0.5 and r from PCG32, the error to the six targets of Table 1 with the
-// level's weights looked up once per density (a constant cube has one), the
-// binary volume b as output; densities g = clamp(scale * value), from a
+// level's weights looked up when the density changes (a constant cube has
+// one; for 8-bit input from a table of the 256 values' weights, made once),
+// the binary volume b as output; densities g = clamp(scale * value), from a
 // 256-entry table for 8-bit input. It does not: renormalize the weights at
 // the faces (the error buffers are padded by one voxel, and what lands in
 // the padding is dropped), divide or take a modulo per voxel, warm up,
@@ -81,9 +83,11 @@ vtkIdType TightScan(const T* values, int n, double scale, unsigned char* b)
   std::vector<float> current(static_cast<size_t>(pitch) * pitch, 0.0f);
   std::vector<float> next(current.size(), 0.0f);
   float lut[256];
+  vtkErrorDiffusionParameterTable::Parameters byValue[256];
   for (int v = 0; v < 256; ++v)
   {
     lut[v] = static_cast<float>(std::min(1.0, std::max(0.0, scale * v)));
+    byValue[v] = table.Evaluate(lut[v]);
   }
   const auto density = [&](T value) {
     if (sizeof(T) == 1)
@@ -130,7 +134,7 @@ vtkIdType TightScan(const T* values, int n, double scale, unsigned char* b)
         const float g = density(in[idx]);
         if (g != lastG)
         {
-          const auto p = table.Evaluate(g);
+          const auto p = sizeof(T) == 1 ? byValue[static_cast<unsigned char>(in[idx])] : table.Evaluate(g);
           std::copy(p.Weights.begin(), p.Weights.end(), w);
           m = 0.5f * p.Modulation;
           lastG = g;
@@ -171,13 +175,35 @@ vtkSmartPointer<vtkImageData> Cube(int n, double value, int layers = 0)
   return image;
 }
 
-// The tight loop on the same cube, fastest of 3, in seconds.
+// 8^3 blocks of values drawn from [low, high] filling an n^3 uint8 cube
+// (n a multiple of 8): a density step at every block face.
+vtkSmartPointer<vtkImageData> Blocks(int n, int low, int high)
+{
+  auto image = Cube<vtkUnsignedCharArray>(n, 0);
+  auto* v = vtkUnsignedCharArray::SafeDownCast(image->GetPointData()->GetScalars())->GetPointer(0);
+  Pcg32 random;
+  const int blocks = n / 8;
+  std::vector<unsigned char> value(static_cast<size_t>(blocks) * blocks * blocks);
+  for (auto& b : value)
+  {
+    b = static_cast<unsigned char>(low + std::min(high - low, static_cast<int>(random.Uniform() * (high - low + 1))));
+  }
+  for (int z = 0; z < n; ++z)
+    for (int y = 0; y < n; ++y)
+      for (int x = 0; x < n; ++x)
+        *v++ = value[(static_cast<size_t>(z / 8) * blocks + y / 8) * blocks + x / 8];
+  return image;
+}
+
+// The tight loop on the same n^3 cube, fastest of 3, in seconds; densities
+// value / 255 for 8-bit values, the value itself for floats (as the cases'
+// cubes hold them).
 template <typename T>
-double PlainSeconds(vtkImageData* image, double g, vtkIdType* points = nullptr)
+double PlainSeconds(vtkImageData* image, vtkIdType* points = nullptr)
 {
   const int n = image->GetDimensions()[0];
   const auto* values = static_cast<const T*>(image->GetPointData()->GetScalars()->GetVoidPointer(0));
-  const double scale = g / static_cast<double>(values[0]);
+  const double scale = sizeof(T) == 1 ? 1.0 / 255.0 : 1.0;
   std::vector<unsigned char> b(static_cast<size_t>(n) * n * n);
   double best = 1e30;
   for (int i = 0; i < 3; ++i)
@@ -225,6 +251,35 @@ private:
   std::vector<std::thread> Threads;
 };
 
+// The Method (the paper's error diffusion with the paper's parameters).
+void SetMethod(vtkErrorDiffusionSampler* sampler, int method)
+{
+  sampler->SetMethod(method);
+  if (method == vtkErrorDiffusionSampler::METHOD_ERROR_DIFFUSION)
+  {
+    sampler->SetParameterSet(vtkErrorDiffusionSampler::PARAMETERS_PAPER);
+  }
+}
+
+// The fastest re-execution of the sampler (as after a change of property),
+// one per iteration, in seconds. Once untimed before: the first run of a
+// process calibrates the charge curve of the parameter table (cached for the
+// process) and faults the output in.
+double UpdateSeconds(benchmark::State& state, vtkErrorDiffusionSampler* sampler)
+{
+  sampler->Update();
+  double best = 1e30;
+  for (auto _ : state)
+  {
+    sampler->Modified();
+    const auto start = Clock::now();
+    sampler->Update();
+    best = std::min(best, std::chrono::duration<double>(Clock::now() - start).count());
+    benchmark::DoNotOptimize(sampler->GetOutput()->GetNumberOfPoints());
+  }
+  return best;
+}
+
 // range(0): edge; range(1): g in 1/255; range(2): 1 for float input;
 // range(3): 1 with every core busy; range(4): 0 forbids the worker thread;
 // range(5): the Method (2, relaxed error diffusion, is the default; 0 the
@@ -239,7 +294,7 @@ void BM_Filter(benchmark::State& state)
   // filter (the faster of the two: the host's other guests come and go).
   Load load(state.range(3) != 0);
   const auto plainSeconds = [&] {
-    return floats ? PlainSeconds<float>(image, g) : PlainSeconds<unsigned char>(image, g);
+    return floats ? PlainSeconds<float>(image) : PlainSeconds<unsigned char>(image);
   };
   double plain = plainSeconds();
   vtkNew<vtkErrorDiffusionSampler> sampler;
@@ -247,24 +302,34 @@ void BM_Filter(benchmark::State& state)
   sampler->SetDensityMappingToIdentity(); // a constant cube has no scalar range
   sampler->SetNumberOfPoints(static_cast<vtkIdType>(g * n * n * n));
   sampler->SetUseWorkerThread(state.range(4) != 0);
-  sampler->SetMethod(static_cast<int>(state.range(5)));
-  if (state.range(5) == vtkErrorDiffusionSampler::METHOD_ERROR_DIFFUSION)
-  {
-    sampler->SetParameterSet(vtkErrorDiffusionSampler::PARAMETERS_PAPER);
-  }
-  // Once untimed: the first run of a process calibrates the charge curve of
-  // the parameter table (cached for the process) and faults the output in.
-  sampler->Update();
-  double best = 1e30;
-  for (auto _ : state)
-  {
-    sampler->Modified();
-    const auto start = Clock::now();
-    sampler->Update();
-    best = std::min(best, std::chrono::duration<double>(Clock::now() - start).count());
-    benchmark::DoNotOptimize(sampler->GetOutput()->GetNumberOfPoints());
-  }
+  SetMethod(sampler, static_cast<int>(state.range(5)));
+  const double best = UpdateSeconds(state, sampler);
   plain = std::min(plain, plainSeconds());
+  state.counters["voxels/s"] = benchmark::Counter(
+    static_cast<double>(n) * n * n, benchmark::Counter::kIsIterationInvariantRate);
+  state.counters["x_tight"] = plain / best;
+  state.counters["points"] = static_cast<double>(sampler->GetOutput()->GetNumberOfPoints());
+}
+
+// A volume with density steps everywhere against the tight loop on it: 256^3
+// uint8 of 8^3 blocks of values drawn from 2 .. 64, densities value / 255
+// (all where the default method relaxes, and neighbors up to 32 times
+// denser: about half the voxels are next to a dissimilar density, where the
+// scan and the relaxation take their slower paths). The budget is the sum of
+// the densities, the worker thread allowed. range(0): the Method.
+void BM_Steps(benchmark::State& state)
+{
+  const int n = 256;
+  auto image = Blocks(n, 2, 64);
+  double plain = PlainSeconds<unsigned char>(image);
+  vtkNew<vtkErrorDiffusionSampler> sampler;
+  sampler->SetInputData(image);
+  sampler->SetDensityMappingToIdentity();
+  sampler->UseNumberOfPointsOff();
+  sampler->SetDensityScale(1.0 / 255.0);
+  SetMethod(sampler, static_cast<int>(state.range(0)));
+  const double best = UpdateSeconds(state, sampler);
+  plain = std::min(plain, PlainSeconds<unsigned char>(image));
   state.counters["voxels/s"] = benchmark::Counter(
     static_cast<double>(n) * n * n, benchmark::Counter::kIsIterationInvariantRate);
   state.counters["x_tight"] = plain / best;
@@ -283,11 +348,7 @@ double OneThreadSeconds(vtkImageData* image, double g, int method, bool parts, i
   s->UseNumberOfPointsOff();
   s->SetDensityScale(g);
   s->SetUseWorkerThread(false);
-  s->SetMethod(method);
-  if (method == vtkErrorDiffusionSampler::METHOD_ERROR_DIFFUSION)
-  {
-    s->SetParameterSet(vtkErrorDiffusionSampler::PARAMETERS_PAPER);
-  }
+  SetMethod(s, method);
   if (!parts)
   {
     s->SetPartLayers(65536);
@@ -383,8 +444,7 @@ void BM_Plain(benchmark::State& state)
   for (auto _ : state)
   {
     best = std::min(best,
-      floats ? PlainSeconds<float>(image, g, &points)
-             : PlainSeconds<unsigned char>(image, g, &points));
+      floats ? PlainSeconds<float>(image, &points) : PlainSeconds<unsigned char>(image, &points));
   }
   state.counters["seconds"] = best;
   state.counters["points"] = static_cast<double>(points);
@@ -396,7 +456,7 @@ void BM_Kernel(benchmark::State& state)
   const int n = static_cast<int>(state.range(0));
   const float g = static_cast<float>(state.range(1)) / 255.0f;
   auto image = Cube<vtkFloatArray>(n, g);
-  const double plain = PlainSeconds<float>(image, g);
+  const double plain = PlainSeconds<float>(image);
   const size_t layer = static_cast<size_t>(n) * n;
   std::vector<float> density(layer, g);
   std::vector<unsigned char> mask(layer);
@@ -486,6 +546,13 @@ BENCHMARK(BM_Filter)
   ->ArgsProduct({ { 256 }, { 8 }, { 0 }, { 1 }, { 0, 1 }, { 2, 0 } })
   ->ArgsProduct({ { 256 }, { 4, 16, 32, 64 }, { 0 }, { 0 }, { 1 }, { 2, 0 } })
   ->UseRealTime() // two threads: CPU time of the caller alone would flatter
+  ->ComputeStatistics("min", Fastest)
+  ->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_Steps)
+  ->ArgName("method")
+  ->Arg(2)
+  ->Arg(0)
+  ->UseRealTime()
   ->ComputeStatistics("min", Fastest)
   ->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_PartsProjection)
