@@ -5,13 +5,16 @@
 // diffusion coefficients and m(g) with Nelder-Mead, starting from a table's
 // parameters at that level, and writes the result as a parameter table that
 // the sampler's Custom parameter set reads, with T, L, S per level as comments.
-// --relaxed measures the default method (the scan's samples relaxed);
-// --keep-symmetry minimizes L(g) among the parameters of at most the start's S(g).
+// --relaxed measures the default method (the scan's samples relaxed; levels
+// above the densities the relaxation moves keep the start's parameters);
+// --keep-symmetry minimizes L(g) among the parameters of at most the start's
+// S(g) and anisotropy.
 //
 //   bluenoise-optimize [--output FILE] [--size L] [--seeds K] [--weight W]
 //                      [--evaluations N] [--levels 1,8,16,...] [--start paper|fixed|FILE]
 //                      [--threads T] [--relaxed] [--keep-symmetry] [--resume]
 #include "bluenoise_options.h"
+#include "vtkBlueNoiseRelaxation.h"
 #include "vtkErrorDiffusionOptimizer.h"
 #include "vtkErrorDiffusionParameterTable.h"
 
@@ -66,7 +69,7 @@ int ParseOptions(int argc, char* argv[], Options& o)
   cli.AddFlag("--relaxed", o.Settings.Relaxed,
     "measure the default method: the scan's samples after the relaxation pass");
   cli.AddFlag("--keep-symmetry", o.Settings.KeepSymmetry,
-    "minimize L(g) instead of T(g), with S(g) held at or below the start's");
+    "minimize L(g) instead of T(g), with S(g) and the anisotropy at or below the start's");
   cli.AddFlag("--resume", o.Resume, "keep the levels already in the --output table, do the others");
   return cli.Parse(argc, argv);
 }
@@ -205,7 +208,7 @@ std::string TableHeader(const Options& o)
   const auto& settings = o.Settings;
   std::ostringstream header;
   header << "Optimized by bluenoise-optimize: "
-         << (settings.KeepSymmetry ? "minimum of L, S at most the start's,"
+         << (settings.KeepSymmetry ? "minimum of L, S and anisotropy at most the start's,"
                                    : "minimum of T = w L + (1 - w) S")
          << " per level\n"
          << "cube " << settings.GridSize << "^3, seeds 0.." << settings.Seeds - 1
@@ -216,7 +219,9 @@ std::string TableHeader(const Options& o)
          << " voxels";
   if (settings.Relaxed)
   {
-    header << ";\nmeasured after the relaxation pass (the default method)";
+    header << ";\nmeasured after the relaxation pass (the default method); levels above "
+           << 255.0 * vtkBlueNoiseRelaxation::MaximumDensity
+           << ", where nothing is relaxed, as in the start table (evaluations=0)";
   }
   return header.str();
 }
@@ -259,7 +264,9 @@ private:
     for (size_t i = this->Next++; i < this->Todo.size(); i = this->Next++)
     {
       const double level = this->Todo[i];
-      const LevelResult result = this->Optimize(level);
+      const bool relaxed = level / 255.0 <= vtkBlueNoiseRelaxation::MaximumDensity;
+      const LevelResult result =
+        this->Settings.Relaxed && !relaxed ? this->Keep(level) : this->Optimize(level);
       vtkErrorDiffusionOptimizer::Evaluation interior;
       std::string why;
       const bool measured = vtkErrorDiffusionOptimizer::Evaluate(
@@ -287,6 +294,26 @@ private:
                     << std::endl;
         }
       });
+  }
+
+  // The start table's parameters at one level, not searched: above the
+  // densities the relaxation moves, where the default method is the plain
+  // scan and the start's search stands. Its key as it is where it has one.
+  LevelResult Keep(double level)
+  {
+    LevelResult result;
+    result.Level = level;
+    result.Start = vtkErrorDiffusionOptimizer::KeyAt(this->Start, level);
+    for (const Key& key : this->Start.GetKeys())
+    {
+      result.Start = key.Level == level ? key : result.Start;
+    }
+    result.Optimized = result.Start;
+    vtkErrorDiffusionOptimizer::Evaluation e;
+    vtkErrorDiffusionOptimizer::Evaluate(
+      vtkErrorDiffusionOptimizer::SingleKeyTable(result.Start, level), level, this->Settings, e);
+    result.StartMetrics = result.OptimizedMetrics = e.Whole;
+    return result;
   }
 
   // Adds a finished level to the table and writes the table, one thread at a time.

@@ -286,17 +286,18 @@ vtkErrorDiffusionOptimizer::LevelResult vtkErrorDiffusionOptimizer::OptimizeLeve
     {
       return m.Target;
     }
-    // L relative to the start's. A point of more S than the start's ranks
-    // behind the start (so the best point never has more), and the more so
-    // the more S it has, which leads the simplex back.
+    // L relative to the start's. A point of more S or more anisotropy than
+    // the start's ranks behind the start (so the best point never has
+    // more), and the more so the more it has, which leads the simplex back.
     const double low = from.LowFrequencyRatio > 0.0 ? from.LowFrequencyRatio : 1.0;
     const double relative = m.LowFrequencyRatio / low;
-    if (m.Symmetry <= from.Symmetry)
+    const double symmetry = from.Symmetry > 0.0 ? m.Symmetry / from.Symmetry - 1.0 : m.Symmetry;
+    const double anisotropy = m.AnisotropyDB - from.AnisotropyDB;
+    if (symmetry <= 0.0 && anisotropy <= 0.0)
     {
       return relative;
     }
-    const double excess = from.Symmetry > 0.0 ? m.Symmetry / from.Symmetry - 1.0 : 1.0;
-    return 1.0 + relative + 10.0 * excess;
+    return 1.0 + relative + 10.0 * std::max(symmetry, 0.0) + std::max(anisotropy, 0.0);
   };
 
   vtkNelderMeadMinimizer minimizer;

@@ -24,8 +24,9 @@
  * table can be searched for that method.
  *
  * KeepSymmetry: the objective is L(g) alone, among the parameters whose S(g)
- * is at most the start point's (a point of more S ranks behind the start,
- * so the result never has more S than the start; T then falls with L).
+ * and mean anisotropy are at most the start point's (a point of more ranks
+ * behind the start, so the result never has more than the start; T then
+ * falls with L).
  *
  * Evaluate() measures any parameter table at any level with the same recipe;
  * it also reports the interior figures (faces cropped by CropFaces voxels).
@@ -53,7 +54,7 @@ public:
     int WarmUpLayers = 8;
     int CropFaces = 8;        ///< for the interior figures of Evaluate()
     bool Relaxed = false;     ///< measure after the default method's relaxation
-    bool KeepSymmetry = false; ///< minimize L(g), S(g) held at most the start's
+    bool KeepSymmetry = false; ///< minimize L(g), S(g) and anisotropy at most the start's
   };
 
   struct Metrics

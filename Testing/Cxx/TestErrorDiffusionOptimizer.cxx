@@ -3,7 +3,8 @@
 // The parameter optimizer on a tiny grid with a tiny budget lowers T(g) from
 // its start point, returns normalized coefficients, and its figures agree with
 // Evaluate() on the same settings (one metric implementation). Relaxed
-// measures the relaxed samples; KeepSymmetry lowers L without raising S.
+// measures the relaxed samples; KeepSymmetry lowers L without raising S or
+// the anisotropy.
 #include "BlueNoiseTestUtilities.h"
 #include "vtkErrorDiffusionOptimizer.h"
 
@@ -64,7 +65,7 @@ int main()
   Check(moved.Whole.LowFrequencyRatio < 0.9 * scan.Whole.LowFrequencyRatio,
     "the relaxation lowers L");
 
-  // KeepSymmetry: L lowered, S not raised above the start's.
+  // KeepSymmetry: L lowered, S and anisotropy not raised above the start's.
   relaxed.KeepSymmetry = true;
   relaxed.MaximumEvaluations = 40;
   const auto k = vtkErrorDiffusionOptimizer::OptimizeLevel(
@@ -74,6 +75,8 @@ int main()
             << k.OptimizedMetrics.Symmetry << std::endl;
   Check(k.OptimizedMetrics.LowFrequencyRatio < k.StartMetrics.LowFrequencyRatio, "L lowered");
   Check(k.OptimizedMetrics.Symmetry <= k.StartMetrics.Symmetry, "S not above the start's");
+  Check(k.OptimizedMetrics.AnisotropyDB <= k.StartMetrics.AnisotropyDB,
+    "anisotropy not above the start's");
 
   // Bad settings are refused.
   settings.GridSize = 2;
