@@ -8,7 +8,7 @@
 #include <cstring>
 
 #if defined(__SSE2__)
-#include <xmmintrin.h>
+#include <emmintrin.h>
 #endif
 
 namespace
@@ -63,6 +63,32 @@ std::uint64_t PackBits(const unsigned char* bytes, int n)
     bits |= static_cast<std::uint64_t>(bytes[i] != 0) << i;
   }
   return bits;
+}
+
+// Bit k set when classes[k] is Alike `cls`, for k < 16 n (n <= 4). Sixteen
+// at a time with SSE2: |c - cls| from two saturated differences, compared
+// with SimilarClasses by a third.
+std::uint64_t AlikeBits(const unsigned char* classes, int cls, int n)
+{
+  std::uint64_t alike = 0;
+#if defined(__SSE2__)
+  const __m128i c = _mm_set1_epi8(static_cast<char>(cls));
+  const __m128i most = _mm_set1_epi8(static_cast<char>(vtkBlueNoiseDensityClass::SimilarClasses));
+  for (int i = 0; i < 16 * n; i += 16)
+  {
+    const __m128i v = _mm_loadu_si128(reinterpret_cast<const __m128i*>(classes + i));
+    const __m128i apart = _mm_or_si128(_mm_subs_epu8(v, c), _mm_subs_epu8(c, v));
+    const __m128i near = _mm_cmpeq_epi8(_mm_subs_epu8(apart, most), _mm_setzero_si128());
+    alike |= static_cast<std::uint64_t>(static_cast<unsigned>(_mm_movemask_epi8(near)) & 0xFFFFu)
+      << i;
+  }
+#else
+  for (int k = 0; k < 16 * n; ++k)
+  {
+    alike |= static_cast<std::uint64_t>(vtkBlueNoiseDensityClass::Alike(classes[k], cls)) << k;
+  }
+#endif
+  return alike;
 }
 
 inline bool Relaxable(float g)
@@ -219,24 +245,34 @@ void vtkBlueNoiseRelaxation::SetDensity(float g)
     return;
   }
   this->LastDensity = g;
-  const double spacing = std::cbrt(1.0 / g);
-  this->Limit = 0.75 * spacing * spacing;
-  // Clamped before the conversion to int: tiny densities have a huge spacing.
-  const int radius = static_cast<int>(
-    std::min(std::ceil(0.87 * spacing) + 1.0, static_cast<double>(MaximumRadius)));
-  // Only whether a sample is nearer than the limit matters, and nothing beyond
-  // the radius can be found.
-  const int cap = static_cast<int>(
-    std::min(std::ceil(this->Limit), static_cast<double>((radius + 1) * (radius + 1))));
-  // Densities that vary from sample to sample change the radius or the cap
-  // often: each pair's rows are made once.
-  this->Radius = radius;
-  this->Cap = cap;
-  RowSet& rows = this->RowSets[static_cast<size_t>(radius * RowSetCaps + cap)];
-  if (rows.Shells.empty())
+  // Where neighboring samples differ in density (a volume of steps) the
+  // root changes from one sample to the next: the last roots are kept, in
+  // a table indexed by a hash of the density's bits.
+  std::uint32_t bits;
+  std::memcpy(&bits, &g, sizeof(bits));
+  Roots& roots = this->RootCache[(bits * 0x9E3779B1u) >> (32 - RootCacheBits)];
+  if (roots.Density != g)
   {
-    rows = MakeRows(radius, cap);
+    roots.Density = g;
+    const double spacing = std::cbrt(1.0 / g);
+    roots.Limit = 0.75 * spacing * spacing;
+    // Clamped before the conversion to int: tiny densities have a huge spacing.
+    roots.Radius = static_cast<int>(
+      std::min(std::ceil(0.87 * spacing) + 1.0, static_cast<double>(MaximumRadius)));
+    // Only whether a sample is nearer than the limit matters, and nothing
+    // beyond the radius can be found.
+    roots.Cap = static_cast<int>(std::min(
+      std::ceil(roots.Limit), static_cast<double>((roots.Radius + 1) * (roots.Radius + 1))));
+    // Each pair of radius and cap gets its rows once.
+    RowSet& rows = this->RowSets[static_cast<size_t>(roots.Radius * RowSetCaps + roots.Cap)];
+    if (rows.Shells.empty())
+    {
+      rows = MakeRows(roots.Radius, roots.Cap);
+    }
   }
+  this->Limit = roots.Limit;
+  this->Radius = roots.Radius;
+  this->Cap = roots.Cap;
 }
 
 //------------------------------------------------------------------------------
@@ -454,6 +490,11 @@ void vtkBlueNoiseRelaxation::KeepSimilar(const std::vector<RowRun>& runs, int x,
 {
   const int span = this->Radius + 1;
   const std::uint64_t reach = ((std::uint64_t(1) << (2 * span + 1)) - 1) << (32 - span);
+  // The classes read: of voxels x - 8 ... x + 7, or x - 16 ... x + 15 for
+  // the widest searches (bits 32 - span ... 32 + span are all that are kept).
+  static_assert(MaximumRadius + 1 <= 16, "a search wider than the classes read");
+  const int blocks = span <= 8 ? 1 : 2;
+  const int from = 32 - 8 * blocks;
   for (const RowRun& run : runs)
   {
     const Slot* slot = this->Slots[run.DZ + Reach];
@@ -466,8 +507,18 @@ void vtkBlueNoiseRelaxation::KeepSimilar(const std::vector<RowRun>& runs, int x,
         *cell = slot && vtkBlueNoiseDensityClass::Alike(slot->Low, cls) ? bits : 0;
         continue;
       }
+      if (!bits)
+      {
+        continue;
+      }
       const std::ptrdiff_t first = static_cast<std::ptrdiff_t>(y + dy) * this->NX + (x - 32);
-      for (std::uint64_t left = bits; left; left &= left - 1)
+      if (first + from >= 0 &&
+        first + from + 16 * blocks <= static_cast<std::ptrdiff_t>(slot->Classes.size()))
+      {
+        *cell = bits & (AlikeBits(slot->Classes.data() + first + from, cls, blocks) << from);
+        continue;
+      }
+      for (std::uint64_t left = bits; left; left &= left - 1) // near the layer's ends
       {
         const int k = __builtin_ctzll(left);
         if (!vtkBlueNoiseDensityClass::Alike(slot->Classes[first + k], cls))

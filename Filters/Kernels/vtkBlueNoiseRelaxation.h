@@ -200,6 +200,15 @@ private:
   double Limit = 0.0;         // the squared distance below which a sample moves
   int Radius = 1;             // of the box searched around a voxel
   int Cap = 1;                // distances are counted up to this one (squared)
+  struct Roots // Limit, Radius and Cap of a density
+  {
+    float Density = -1.0f;
+    double Limit = 0.0;
+    int Radius = 1;
+    int Cap = 1;
+  };
+  static constexpr int RootCacheBits = 6;
+  Roots RootCache[1 << RootCacheBits];
   // The row sets by radius and cap (at radius * RowSetCaps + cap), made as
   // they come up (SetDensity).
   static constexpr int RowSetCaps = (MaximumRadius + 1) * (MaximumRadius + 1) + 1;
