@@ -395,7 +395,7 @@ struct Options
   double Weight = 0.02;
   std::string OptimizedFile;
   std::string Mri = "/usr/share/mricron/templates/ch2bet.nii.gz";
-  std::vector<double> Levels = { 1, 4, 8, 16, 32, 64, 127 };
+  std::vector<double> Levels = { 1, 4, 8, 16, 24, 32, 64, 127 };
 };
 
 int ParseOptions(int argc, char* argv[], Options& o)

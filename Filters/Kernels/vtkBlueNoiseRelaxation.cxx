@@ -368,6 +368,8 @@ void vtkBlueNoiseRelaxation::Classify(Slot& slot, const float* density)
     slot.WordLow.assign(slot.Bits.size(), static_cast<unsigned char>(slot.Low));
     slot.WordHigh.assign(slot.Bits.size(), static_cast<unsigned char>(slot.High));
     std::vector<unsigned char>().swap(slot.Classes);
+    slot.Full = c != 0;
+    slot.Support.assign(slot.Full ? 0 : slot.Bits.size(), 0);
     return;
   }
   this->ClassScratch.resize(layer);
@@ -380,6 +382,8 @@ void vtkBlueNoiseRelaxation::Classify(Slot& slot, const float* density)
   }
   slot.WordLow.assign(slot.Bits.size(), 255);
   slot.WordHigh.assign(slot.Bits.size(), 0);
+  slot.Full = std::all_of(classes, classes + layer, [](unsigned char c) { return c != 0; });
+  slot.Support.assign(slot.Full ? 0 : slot.Bits.size(), 0);
   int low = 255, high = 0;
   for (int y = 0; y < this->NY; ++y)
   {
@@ -395,6 +399,10 @@ void vtkBlueNoiseRelaxation::Classify(Slot& slot, const float* density)
         hi = std::max(hi, c);
       }
       const std::ptrdiff_t word = this->RowStart(y) + (x0 >> 6);
+      if (!slot.Full)
+      {
+        slot.Support[word] = PackBits(row + x0, x1 - x0);
+      }
       slot.WordLow[word] = static_cast<unsigned char>(hi ? 255 - complement : 255);
       slot.WordHigh[word] = hi;
       low = std::min<int>(low, slot.WordLow[word]);
@@ -420,6 +428,7 @@ void vtkBlueNoiseRelaxation::Classify(Slot& slot, const float* density)
 void vtkBlueNoiseRelaxation::FindMixed()
 {
   int low = 255, high = 0;
+  bool full = true;
   for (const Slot* slot : this->Slots)
   {
     if (slot)
@@ -427,8 +436,10 @@ void vtkBlueNoiseRelaxation::FindMixed()
       low = std::min(low, slot->Low);
       high = std::max(high, slot->High);
     }
+    full = full && (!slot || slot->Full);
   }
   this->Mixed = low <= high && !vtkBlueNoiseDensityClass::Alike(low, high);
+  this->Whole = full && !this->Mixed;
   if (!this->Mixed)
   {
     return;
@@ -580,6 +591,55 @@ inline unsigned vtkBlueNoiseRelaxation::BlockedFaces(int x, int y) const
 }
 
 //------------------------------------------------------------------------------
+// Whether voxel (x, y) of layer z + dz (z the layer relaxed, |dz| <= Reach)
+// is in the region of class `cls`: in the volume (in the run's layers), of
+// positive density, of a class alike.
+inline bool vtkBlueNoiseRelaxation::InRegion(int x, int y, int dz, int cls) const
+{
+  const Slot* slot = this->Slots[dz + Reach];
+  if (!slot || x < 0 || y < 0 || x >= this->NX || y >= this->NY)
+  {
+    return false;
+  }
+  if (!slot->Full && !((this->Row(slot->Support.data(), y)[x >> 6] >> (x & 63)) & 1))
+  {
+    return false;
+  }
+  const int c = slot->Classes.empty() ? slot->Low : slot->Classes[x + static_cast<size_t>(this->NX) * y];
+  return vtkBlueNoiseDensityClass::Alike(c, cls);
+}
+
+//------------------------------------------------------------------------------
+// Whether the voxels along face f's axis within Radius of sample (x, y) of
+// the layer relaxed and of its neighbor there (Radius + 1 on the face's side,
+// Radius on the other) are all in the region of class `cls`. Where the
+// layers in reach are whole (Whole), only the volume's faces along x and y
+// and the run's layers (consecutive) can end it.
+bool vtkBlueNoiseRelaxation::LineInRegion(int x, int y, int face, int cls) const
+{
+  const int* f = Faces[face];
+  const int r = this->Radius;
+  if (this->Whole)
+  {
+    const int lo = -r, hi = r + 1; // t along the face's direction
+    const auto within = [&](int p, int step, int n) {
+      return step == 0 || (std::min(p + step * lo, p + step * hi) >= 0 &&
+                            std::max(p + step * lo, p + step * hi) < n);
+    };
+    return within(x, f[0], this->NX) && within(y, f[1], this->NY) &&
+      (f[2] == 0 || (this->Slots[Reach + r + 1] && this->Slots[Reach - r - 1]));
+  }
+  for (int t = -r; t <= r + 1; ++t)
+  {
+    if (!this->InRegion(x + t * f[0], y + t * f[1], t * f[2], cls))
+    {
+      return false;
+    }
+  }
+  return true;
+}
+
+//------------------------------------------------------------------------------
 // Bit f set when face neighbor f has a sample other than this one at squared
 // distance `reach` (1 or 2) or less: it cannot be farther from the others than
 // this sample is when its nearest other sample is at `reach` or more. Most
@@ -622,9 +682,9 @@ void vtkBlueNoiseRelaxation::RelaxSample(int x, int y, int z, float g)
   // Where densities are mixed, the samples of other densities leave the
   // window. None of them fills a voxel the sample may move to: that voxel's
   // density is within DensityTolerance of the sample's, so of a similar class.
+  const int cls = vtkBlueNoiseDensityClass::Of(g);
   if (this->Mixed)
   {
-    const int cls = vtkBlueNoiseDensityClass::Of(g);
     if (this->MixedAround(x, y, cls))
     {
       this->KeepSimilar(loaded, x, y, cls);
@@ -653,7 +713,8 @@ void vtkBlueNoiseRelaxation::RelaxSample(int x, int y, int z, float g)
     const int X = x + f[0], Y = y + f[1];
     const float* density = this->Densities[f[2] + 1];
     const float gc = density[X + static_cast<size_t>(this->NX) * Y];
-    if (!Relaxable(gc) || std::abs(gc - g) > DensityTolerance * g)
+    if (!Relaxable(gc) || std::abs(gc - g) > DensityTolerance * g ||
+      !this->LineInRegion(x, y, face, cls))
     {
       continue;
     }

@@ -64,6 +64,22 @@ int Nearest(const Volume& v, int x, int y, int z, int radius, int cap, const int
   return best;
 }
 
+// Whether the voxels from (x, y, z) + lo f to (x, y, z) + hi f are all in
+// the volume, of positive densities similar to g.
+bool LineInRegion(const Volume& v, int x, int y, int z, const int f[3], int lo, int hi, float g)
+{
+  for (int t = lo; t <= hi; ++t)
+  {
+    const int X = x + t * f[0], Y = y + t * f[1], Z = z + t * f[2];
+    if (!v.Inside(X, Y, Z) || !(v.Density[v.Index(X, Y, Z)] > 0.0f) ||
+      !vtkBlueNoiseDensityClass::Similar(v.Density[v.Index(X, Y, Z)], g))
+    {
+      return false;
+    }
+  }
+  return true;
+}
+
 // One sample's chance to move, as the class comment defines it.
 void RelaxSample(Volume& v, std::vector<unsigned char>& moved, int x, int y, int z, std::uint64_t seed)
 {
@@ -91,7 +107,8 @@ void RelaxSample(Volume& v, std::vector<unsigned char>& moved, int x, int y, int
       continue;
     }
     const float gc = v.Density[v.Index(X, Y, Z)];
-    if (!Relaxable(gc) || std::abs(gc - g) > R::DensityTolerance * g)
+    if (!Relaxable(gc) || std::abs(gc - g) > R::DensityTolerance * g ||
+      !LineInRegion(v, x, y, z, R::Faces[face], -radius, radius + 1, g))
     {
       continue;
     }
