@@ -612,23 +612,11 @@ inline bool vtkBlueNoiseRelaxation::InRegion(int x, int y, int dz, int cls) cons
 //------------------------------------------------------------------------------
 // Whether the voxels along face f's axis within Radius of sample (x, y) of
 // the layer relaxed and of its neighbor there (Radius + 1 on the face's side,
-// Radius on the other) are all in the region of class `cls`. Where the
-// layers in reach are whole (Whole), only the volume's faces along x and y
-// and the run's layers (consecutive) can end it.
+// Radius on the other) are all in the region of class `cls`.
 bool vtkBlueNoiseRelaxation::LineInRegion(int x, int y, int face, int cls) const
 {
   const int* f = Faces[face];
   const int r = this->Radius;
-  if (this->Whole)
-  {
-    const int lo = -r, hi = r + 1; // t along the face's direction
-    const auto within = [&](int p, int step, int n) {
-      return step == 0 || (std::min(p + step * lo, p + step * hi) >= 0 &&
-                            std::max(p + step * lo, p + step * hi) < n);
-    };
-    return within(x, f[0], this->NX) && within(y, f[1], this->NY) &&
-      (f[2] == 0 || (this->Slots[Reach + r + 1] && this->Slots[Reach - r - 1]));
-  }
   for (int t = -r; t <= r + 1; ++t)
   {
     if (!this->InRegion(x + t * f[0], y + t * f[1], t * f[2], cls))
@@ -637,6 +625,24 @@ bool vtkBlueNoiseRelaxation::LineInRegion(int x, int y, int face, int cls) const
     }
   }
   return true;
+}
+
+//------------------------------------------------------------------------------
+// Bit f set when the line of face f (LineInRegion) leaves the region, where
+// the layers in reach are whole (Whole): only the volume's faces along x and
+// y and the run's layers (consecutive: the two ends tell) can end it.
+inline unsigned vtkBlueNoiseRelaxation::BandFaces(int x, int y) const
+{
+  const int r = this->Radius;
+  // The line from p - r to p + r + 1 (towards +) or p - r - 1 to p + r (-).
+  const auto up = [r](int p, int n) { return static_cast<unsigned>(p - r < 0 || p + r + 1 >= n); };
+  const auto down = [r](int p, int n) { return static_cast<unsigned>(p - r - 1 < 0 || p + r >= n); };
+  const Slot* const* s = this->Slots + Reach;
+  const unsigned zUp = !s[-r] || !s[r + 1];
+  const unsigned zDown = !s[-r - 1] || !s[r];
+  // Faces in the order of the table Faces: +x, -x, +y, -y, +z, -z.
+  return up(x, this->NX) | down(x, this->NX) << 1 | up(y, this->NY) << 2 |
+    down(y, this->NY) << 3 | zUp << 4 | zDown << 5;
 }
 
 //------------------------------------------------------------------------------
@@ -702,7 +708,8 @@ void vtkBlueNoiseRelaxation::RelaxSample(int x, int y, int z, float g)
   // tolerance of 1/8: 3 % fewer points in the sparse end slab of a ramp).
   int best = current;
   int target = -1;
-  const unsigned blocked = this->BlockedFaces(x, y) | this->CrowdedFaces(std::min(current, 2));
+  const unsigned blocked = this->BlockedFaces(x, y) | this->CrowdedFaces(std::min(current, 2)) |
+    (this->Whole ? this->BandFaces(x, y) : 0u);
   for (const int face : order)
   {
     if ((blocked >> face) & 1)
@@ -714,7 +721,7 @@ void vtkBlueNoiseRelaxation::RelaxSample(int x, int y, int z, float g)
     const float* density = this->Densities[f[2] + 1];
     const float gc = density[X + static_cast<size_t>(this->NX) * Y];
     if (!Relaxable(gc) || std::abs(gc - g) > DensityTolerance * g ||
-      !this->LineInRegion(x, y, face, cls))
+      (!this->Whole && !this->LineInRegion(x, y, face, cls)))
     {
       continue;
     }

@@ -197,6 +197,7 @@ private:
   unsigned CrowdedFaces(int reach) const;
   bool InRegion(int x, int y, int dz, int cls) const;
   bool LineInRegion(int x, int y, int face, int cls) const;
+  unsigned BandFaces(int x, int y) const;
   void SortOrder();
   void RelaxLayer(int z);
   void Prefetch(int x, int y, const Plane& plane);

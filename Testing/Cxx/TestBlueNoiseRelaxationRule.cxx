@@ -166,7 +166,7 @@ void Relax(Volume& v, std::uint64_t seed)
 
 // Densities: a few values per region, some within the tolerance of each other;
 // with `bands`, whole layers no sample may move in (0 and 0.3) between them.
-Volume Random(int nx, int ny, int nz, std::uint32_t seed, bool bands = false)
+Volume Random(int nx, int ny, int nz, std::uint32_t seed, bool bands = false, bool constant = false)
 {
   std::mt19937 random(seed);
   Volume v{ { nx, ny, nz }, {}, {} };
@@ -189,7 +189,9 @@ Volume Random(int nx, int ny, int nz, std::uint32_t seed, bool bands = false)
       {
         const size_t r = x / block + (nx / block + 1) * (y / block + (ny / block + 1) * (z / block));
         const size_t i = v.Index(x, y, z);
-        v.Density[i] = !bands || (z / 4) % 3 == 0 ? region[r] : (z / 4) % 3 == 1 ? 0.0f : 0.3f;
+        v.Density[i] = constant ? 24.0f / 255
+          : !bands || (z / 4) % 3 == 0 ? region[r]
+                                        : (z / 4) % 3 == 1 ? 0.0f : 0.3f;
         v.Mask[i] = unit(random) < 2.0f * std::max(v.Density[i], 0.02f) ? 1 : 0;
       }
     }
@@ -201,14 +203,16 @@ Volume Random(int nx, int ny, int nz, std::uint32_t seed, bool bands = false)
 int main()
 {
   // Rows shorter and longer than a word, a column, more layers than the ring holds.
-  const int shapes[][3] = { { 13, 11, 17 }, { 70, 9, 12 }, { 130, 6, 10 }, { 1, 1, 5 }, { 20, 8, 40 } };
+  const int shapes[][3] = { { 13, 11, 17 }, { 70, 9, 12 }, { 130, 6, 10 }, { 1, 1, 5 }, { 20, 8, 40 },
+    { 24, 22, 30 } };
   for (const auto& shape : shapes)
   {
-    for (std::uint64_t seed : { 1u, 77u, 5u })
+    for (std::uint64_t seed : { 1u, 77u, 5u, 9u })
     {
       // Seed 5: bands of 4 layers that relax, then 4 of 0, then 4 of 0.3.
-      Volume v =
-        Random(shape[0], shape[1], shape[2], static_cast<std::uint32_t>(seed + shape[0]), seed == 5);
+      // Seed 9: one density everywhere (the faces of the volume alone).
+      Volume v = Random(shape[0], shape[1], shape[2], static_cast<std::uint32_t>(seed + shape[0]),
+        seed == 5, seed == 9);
       const auto count = std::count(v.Mask.begin(), v.Mask.end(), 1);
       const size_t layer = static_cast<size_t>(shape[0]) * shape[1];
       std::vector<unsigned char> relaxed(v.Mask.size(), 2);
