@@ -209,7 +209,8 @@ double PlainSeconds(vtkImageData* image, vtkIdType* points = nullptr)
   for (int i = 0; i < 3; ++i)
   {
     const auto start = Clock::now();
-    const vtkIdType count = TightScan(values, n, scale, b.data());
+    // Not const: newer Google Benchmark deprecates DoNotOptimize of a const value.
+    vtkIdType count = TightScan(values, n, scale, b.data());
     benchmark::DoNotOptimize(count);
     if (points)
     {
