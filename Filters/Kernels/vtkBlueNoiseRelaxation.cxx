@@ -685,10 +685,10 @@ void vtkBlueNoiseRelaxation::RelaxSample(int x, int y, int z, float g)
   {
     return; // with samples of other densities in view: without them too
   }
+  const int cls = vtkBlueNoiseDensityClass::Of(g); // of its region
   // Where densities are mixed, the samples of other densities leave the
   // window. None of them fills a voxel the sample may move to: that voxel's
   // density is within DensityTolerance of the sample's, so of a similar class.
-  const int cls = vtkBlueNoiseDensityClass::Of(g);
   if (this->Mixed)
   {
     if (this->MixedAround(x, y, cls))

@@ -281,6 +281,15 @@ double UpdateSeconds(benchmark::State& state, vtkErrorDiffusionSampler* sampler)
   return best;
 }
 
+// The counters of a filter case on an n^3 volume: voxels/s, x_tight, points.
+void FilterCounters(benchmark::State& state, int n, double tight, vtkErrorDiffusionSampler* sampler)
+{
+  state.counters["voxels/s"] = benchmark::Counter(
+    static_cast<double>(n) * n * n, benchmark::Counter::kIsIterationInvariantRate);
+  state.counters["x_tight"] = tight;
+  state.counters["points"] = static_cast<double>(sampler->GetOutput()->GetNumberOfPoints());
+}
+
 // range(0): edge; range(1): g in 1/255; range(2): 1 for float input;
 // range(3): 1 with every core busy; range(4): 0 forbids the worker thread;
 // range(5): the Method (2, relaxed error diffusion, is the default; 0 the
@@ -306,10 +315,7 @@ void BM_Filter(benchmark::State& state)
   SetMethod(sampler, static_cast<int>(state.range(5)));
   const double best = UpdateSeconds(state, sampler);
   plain = std::min(plain, plainSeconds());
-  state.counters["voxels/s"] = benchmark::Counter(
-    static_cast<double>(n) * n * n, benchmark::Counter::kIsIterationInvariantRate);
-  state.counters["x_tight"] = plain / best;
-  state.counters["points"] = static_cast<double>(sampler->GetOutput()->GetNumberOfPoints());
+  FilterCounters(state, n, plain / best, sampler);
 }
 
 // A volume with density steps everywhere against the tight loop on it: 256^3
@@ -331,10 +337,7 @@ void BM_Steps(benchmark::State& state)
   SetMethod(sampler, static_cast<int>(state.range(0)));
   const double best = UpdateSeconds(state, sampler);
   plain = std::min(plain, PlainSeconds<unsigned char>(image));
-  state.counters["voxels/s"] = benchmark::Counter(
-    static_cast<double>(n) * n * n, benchmark::Counter::kIsIterationInvariantRate);
-  state.counters["x_tight"] = plain / best;
-  state.counters["points"] = static_cast<double>(sampler->GetOutput()->GetNumberOfPoints());
+  FilterCounters(state, n, plain / best, sampler);
 }
 
 // The fastest of `runs` executions of the filter on one thread (no worker
