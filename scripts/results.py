@@ -410,7 +410,9 @@ def section_pvpython(opts, scratch):
             'after a change of `Seed`, as a re-Apply (the first two not counted, see the script).',
             'Each timed `UpdatePipeline` is followed by the tight loop (`BM_Plain`) under the',
             'same load; x = loop / UpdatePipeline of each pair, for *again* the median and the',
-            'lowest in brackets.', '']
+            'lowest in brackets. MiB: how much the process\'s resident memory grew during the',
+            '`UpdatePipeline` (a first execution faults its output in, a re-execution writes into',
+            'the memory of an earlier output).', '']
     out += [l for l in text.splitlines() if l.startswith('|')] + ['']
     return out
 

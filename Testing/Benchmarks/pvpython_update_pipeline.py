@@ -18,11 +18,14 @@ identity mapping and a budget of g * voxels (what BM_Filter does):
 Each timed UpdatePipeline is followed by the tight single-threaded loop of the
 same scan (BM_Plain of the benchmark program) under the same load:
 x = loop seconds / UpdatePipeline seconds of each pair; re-executions print the
-median and the lowest ratio. No thresholds: figures for
+median and the lowest ratio; MiB = how much the process's resident memory grew
+during the UpdatePipeline (a first execution faults its output in; a
+re-execution writes into the memory of an earlier output). No thresholds: figures for
 Documentation/Results.md (scripts/results.py).
 """
 import argparse
 import json
+import os
 import statistics
 import subprocess
 import time
@@ -45,6 +48,18 @@ def cube(n, g255, floats):
     return image
 
 
+def resident_mib():
+    with open('/proc/self/statm') as statm:
+        return int(statm.read().split()[1]) * os.sysconf('SC_PAGE_SIZE') / 2.0 ** 20
+
+
+def timed_update(sampler):
+    """Seconds of one UpdatePipeline, and the MiB the resident memory grew by."""
+    before, start = resident_mib(), time.perf_counter()
+    sampler.UpdatePipeline()
+    return time.perf_counter() - start, resident_mib() - before
+
+
 def plain_seconds(benchmark, n, g255, floats):
     name = 'BM_Plain/L:%d/g255:%d/float:%d' % (n, g255, floats)
     out = subprocess.run([benchmark, '--benchmark_filter=^%s' % name, '--benchmark_format=json'],
@@ -64,8 +79,9 @@ def main():
     parser.add_argument('--repeats', type=int, default=5)
     args = parser.parse_args()
     LoadPlugin(args.plugin, remote=False, ns=globals())
-    print('| edge | g | input | method | first s | first x | again s (median) | again x: median (lowest) |')
-    print('| ---: | ---: | --- | --- | ---: | ---: | ---: | ---: |')
+    print('| edge | g | input | method | first s | first x | first MiB '
+          '| again s (median) | again x: median (lowest) | again MiB (median) |')
+    print('| ---: | ---: | --- | --- | ---: | ---: | ---: | ---: | ---: | ---: |')
     for n in [int(s) for s in args.sizes.split(',')]:
         for g255 in (8, 127):
             for floats in (0, 1):
@@ -77,24 +93,22 @@ def main():
                     sampler.Method = method
                     sampler.ParameterSet = table
                     sampler.NumberOfPoints = int(g255 / 255.0 * n ** 3)
-                    start = time.perf_counter()
-                    sampler.UpdatePipeline()
-                    first = time.perf_counter() - start
+                    first, first_mib = timed_update(sampler)
                     first_plain = plain_seconds(args.benchmark, n, g255, floats)
                     sampler.Seed = 100
                     sampler.UpdatePipeline()
-                    times, plains = [], []
+                    times, plains, again_mib = [], [], []
                     for k in range(args.repeats):
                         sampler.Seed = k  # a change of property: the next update executes
-                        start = time.perf_counter()
-                        sampler.UpdatePipeline()
-                        times.append(time.perf_counter() - start)
+                        seconds, grown = timed_update(sampler)
+                        times.append(seconds)
+                        again_mib.append(grown)
                         plains.append(plain_seconds(args.benchmark, n, g255, floats))
                     ratios = [p / t for p, t in zip(plains, times)]
-                    print('| %d | %d/255 | %s | %s | %.3f | %.2f | %.3f | %.2f (%.2f) |' % (
+                    print('| %d | %d/255 | %s | %s | %.3f | %.2f | %.0f | %.3f | %.2f (%.2f) | %.0f |' % (
                         n, g255, 'float' if floats else 'uint8', label, first, first_plain / first,
-                        statistics.median(times), statistics.median(ratios), min(ratios)),
-                        flush=True)
+                        first_mib, statistics.median(times), statistics.median(ratios),
+                        min(ratios), statistics.median(again_mib)), flush=True)
                     servermanager.ProxyManager().UnRegisterProxies()
                     del sampler, producer
 
