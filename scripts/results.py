@@ -405,8 +405,8 @@ def section_pvpython(opts, scratch):
                      'quick (256^3 only, 2 re-executions a case)' if opts.quick else None)
     out += ['The proxy\'s defaults (`Jitter` on) but for the identity mapping and a budget of',
             'g x voxels, with the default method and with the paper\'s (Table 1). *first*: the',
-            'first `UpdatePipeline` of a new proxy, as a first Apply (a fresh output; for the',
-            'first case of a method, the calibration of its charges); *again*: re-executions',
+            'first `UpdatePipeline` of a new proxy, as a first Apply (a fresh output; the',
+            'built-in tables\' charges are known, nothing is calibrated); *again*: re-executions',
             'after a change of `Seed`, as a re-Apply (the first two not counted, see the script).',
             'Each timed `UpdatePipeline` is followed by the tight loop (`BM_Plain`) under the',
             'same load; x = loop / UpdatePipeline of each pair, for *again* the median and the',

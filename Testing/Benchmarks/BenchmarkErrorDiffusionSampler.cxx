@@ -263,9 +263,8 @@ void SetMethod(vtkErrorDiffusionSampler* sampler, int method)
 }
 
 // The fastest re-execution of the sampler (as after a change of property),
-// one per iteration, in seconds. Once untimed before: the first run of a
-// process calibrates the charge curve of the parameter table (cached for the
-// process) and faults the output in.
+// one per iteration, in seconds. Once untimed before: the first run faults
+// the output in.
 double UpdateSeconds(benchmark::State& state, vtkErrorDiffusionSampler* sampler)
 {
   sampler->Update();

@@ -9,8 +9,8 @@ For each constant cube (edge 256 or 512, g = 8/255 and 127/255, uint8 and
 float) and each method (the default, and the paper's error diffusion with its
 Table 1), an Error Diffusion Sampler proxy with its defaults but for the
 identity mapping and a budget of g * voxels (what BM_Filter does):
-- first: its first UpdatePipeline, as a first Apply (a fresh output, and for
-  the process's first case of a method the calibration of its charges);
+- first: its first UpdatePipeline, as a first Apply (a fresh output; the
+  built-in tables' charges are known, nothing is calibrated);
 - again: --repeats re-executions after a change of Seed, as a re-Apply (the
   first two are not counted: ParaView's post filter holds the last output
   while the filter runs again, so from the third on an execution writes into
