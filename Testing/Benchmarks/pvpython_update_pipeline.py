@@ -28,6 +28,7 @@ import json
 import os
 import statistics
 import subprocess
+import sys
 import time
 
 import numpy as np
@@ -48,16 +49,15 @@ def cube(n, g255, floats):
     return image
 
 
-def resident_mib():
-    with open('/proc/self/statm') as statm:
-        return int(statm.read().split()[1]) * os.sysconf('SC_PAGE_SIZE') / 2.0 ** 20
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), '..', 'Python'))
+from bluenoise_testing import resident_bytes  # noqa: E402 (after the path)
 
 
 def timed_update(sampler):
     """Seconds of one UpdatePipeline, and the MiB the resident memory grew by."""
-    before, start = resident_mib(), time.perf_counter()
+    before, start = resident_bytes(), time.perf_counter()
     sampler.UpdatePipeline()
-    return time.perf_counter() - start, resident_mib() - before
+    return time.perf_counter() - start, (resident_bytes() - before) / 2.0 ** 20
 
 
 def plain_seconds(benchmark, n, g255, floats):

@@ -30,17 +30,9 @@ from paraview import servermanager
 from vtkmodules.util.misc import calldata_type
 from vtkmodules.util.vtkConstants import VTK_STRING
 
-from bluenoise_testing import check, finish
+from bluenoise_testing import check, finish, resident_bytes
 
 MB = 1024.0 * 1024.0
-
-
-def resident_bytes(field="VmRSS:"):
-    with open("/proc/self/status") as f:
-        for line in f:
-            if line.startswith(field):
-                return int(line.split()[1]) * 1024
-    return 0
 
 
 def run_parts():

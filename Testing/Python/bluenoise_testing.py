@@ -1,7 +1,8 @@
 # SPDX-FileCopyrightText: Copyright (c) 2025-2026 the BlueNoiseSampling contributors
 # SPDX-License-Identifier: BSD-3-Clause
 """Check reporting shared by the Python tests (Testing/Python, Testing/Applications): every check prints a line, and
-finish() exits non-zero when any failed (ctest reads the exit code)."""
+finish() exits non-zero when any failed (ctest reads the exit code). Also the process's memory, which the
+memory tests and the pvpython benchmark read."""
 import sys
 
 SKIP = 125  # ctest SKIP_RETURN_CODE: a prerequisite is missing
@@ -28,3 +29,12 @@ def summary(passed="all checks passed"):
 
 def finish():
     sys.exit(summary())
+
+
+def resident_bytes(field="VmRSS:"):
+    """A memory field of this process (/proc/self/status; VmHWM: is the peak), in bytes."""
+    with open("/proc/self/status") as f:
+        for line in f:
+            if line.startswith(field):
+                return int(line.split()[1]) * 1024
+    return 0
