@@ -708,12 +708,26 @@ void vtkErrorDiffusionScan::KeepSimilarInterior(const float* density, const floa
 }
 
 //------------------------------------------------------------------------------
+namespace
+{
+// Whether a voxel of density g fires so seldom (or so nearly always) that a
+// branch on the outcome is well predicted: there the branch beats the
+// branch-free scan, which waits for the comparison at every voxel; further
+// from 0 and 1 the mispredictions cost more than it saves.
+inline bool Rare(float g)
+{
+  constexpr float limit = 0.05f;
+  return g < limit || g > 1.0f - limit;
+}
+}
+
+//------------------------------------------------------------------------------
 // The scan of n voxels of a row from idx on (error index eidx) whose six
 // targets are all active and inside the volume: no test on the targets. The
 // generator and what goes from voxel to voxel live in locals: a member would
 // be stored and reloaded around every byte stored to the mask, which may
 // alias it.
-template <bool Record>
+template <bool Record, bool Branchy>
 void vtkErrorDiffusionScan::ScanRun(const float* density, unsigned char* mask, vtkIdType idx,
   vtkIdType d, vtkIdType eidx, vtkIdType ed, vtkIdType ev, int n, float received, RunState& state)
 {
@@ -743,15 +757,35 @@ void vtkErrorDiffusionScan::ScanRun(const float* density, unsigned char* mask, v
       cur[eidx] = value - g;
     }
     const float threshold = level.Base + level.Modulation * random.Uniform();
-    // Branch-free: near g = 0.5 a branch on the outcome is mispredicted half
-    // of the time. value * w - b * w: the product does not wait for the
-    // comparison.
-    const unsigned char b = value >= threshold ? 1 : 0;
-    mask[idx] = b;
-    count += b;
-    const float e = value - static_cast<float>(b);
-    const float taken = value >= threshold ? w[TARGET_U] : 0.0f;
-    carry = value * w[TARGET_U] - taken;
+    float e;
+    if (Branchy)
+    {
+      if (value >= threshold)
+      {
+        mask[idx] = 1;
+        ++count;
+        e = value - 1.0f;
+        carry = value * w[TARGET_U] - w[TARGET_U];
+      }
+      else
+      {
+        mask[idx] = 0;
+        e = value;
+        carry = value * w[TARGET_U];
+      }
+    }
+    else
+    {
+      // Branch-free: near g = 0.5 a branch on the outcome is mispredicted
+      // half of the time. value * w - b * w: the product does not wait for
+      // the comparison. The same numbers as the branch above.
+      const unsigned char b = value >= threshold ? 1 : 0;
+      mask[idx] = b;
+      count += b;
+      e = value - static_cast<float>(b);
+      const float taken = value >= threshold ? w[TARGET_U] : 0.0f;
+      carry = value * w[TARGET_U] - taken;
+    }
     cur[eidx - ed + ev] += e * w[TARGET_BACK_V];
     cur[eidx + ev] += e * w[TARGET_V];
     nxt[eidx - ev] += e * w[TARGET_Z_BACKV];
@@ -816,7 +850,16 @@ vtkIdType vtkErrorDiffusionScan::ScanLayer(
       const int run = FastRun(interior, idx, d, s.NU - p, fastRow && p > 0);
       if (run > 0)
       {
-        this->ScanRun<Record>(density, mask, idx, d, eidx, ed, EV, run, reservoir.Received, state);
+        if (Rare(density[idx]))
+        {
+          this->ScanRun<Record, true>(
+            density, mask, idx, d, eidx, ed, EV, run, reservoir.Received, state);
+        }
+        else
+        {
+          this->ScanRun<Record, false>(
+            density, mask, idx, d, eidx, ed, EV, run, reservoir.Received, state);
+        }
         reservoir.Remaining -= run;
         p += run - 1;
         idx += (run - 1) * d;

@@ -271,7 +271,7 @@ private:
     LevelParameters Level;
     vtkIdType Count = 0;    // samples so far
   };
-  template <bool Record>
+  template <bool Record, bool Branchy>
   void ScanRun(const float* density, unsigned char* mask, vtkIdType idx, vtkIdType d,
     vtkIdType eidx, vtkIdType ed, vtkIdType ev, int n, float received, RunState& state);
   // next: the densities of the following layer, nullptr if there is none.
