@@ -16,10 +16,11 @@
 #         GUI and MPI tests are not part of this build: they run uninstrumented
 #         ParaView programs whose only instrumented code would be the module,
 #         which the C++ and VTK Python tests already cover.
-#   tsan  clang, ThreadSanitizer, the tests labeled `threads` with vtkSMPTools on
-#         its STDThread backend (ParaView's VTK defaults to Sequential, which
-#         would leave the sampler's worker thread and the spectrum's SMP loops
-#         single-threaded).
+#   tsan  clang, ThreadSanitizer, the tests labeled `threads` twice: with
+#         vtkSMPTools on its STDThread backend (the spectrum's SMP loops and the
+#         sampler's parts through vtkSMPTools), and on Sequential, ParaView's
+#         default, where the sampler runs its parts on threads of its own
+#         (vtkBlueNoiseThreads).
 #
 # Suppressions (third-party code only) are in Testing/Sanitizers/.
 # Usage: bash scripts/sanitize.sh asan|tsan     (needs scripts/install-deps.sh's packages)
@@ -73,9 +74,12 @@ case "$variant" in
     # Only the threaded tests run: build only their programs.
     mapfile -t tests < <(cd "$dir" && ctest -N -L threads | sed -n 's/^ *Test *#[0-9]*: //p')
     cmake --build "$dir" -j "$jobs" --target "${tests[@]}"
-    cd "$dir" && VTK_SMP_BACKEND_IN_USE=STDThread \
-      TSAN_OPTIONS="halt_on_error=1:second_deadlock_stack=1:suppressions=$supp/tsan.supp" \
-      ctest --output-on-failure -j "$jobs" --timeout 900 -L threads
+    export TSAN_OPTIONS="halt_on_error=1:second_deadlock_stack=1:suppressions=$supp/tsan.supp"
+    cd "$dir"
+    for backend in STDThread Sequential; do
+      echo "ThreadSanitizer, vtkSMPTools backend $backend:"
+      VTK_SMP_BACKEND_IN_USE=$backend ctest --output-on-failure -j "$jobs" --timeout 900 -L threads
+    done
     ;;
   *)
     echo "sanitize.sh: unknown variant '$variant' (asan or tsan)" >&2

@@ -169,6 +169,7 @@ public:
     vtkBlueNoiseRelaxation Relaxation;
     vtkErrorDiffusionLayerBacklog Backlog; // the relaxation's final layers, to Emit
     vtkErrorDiffusionLayerRunner Runner;   // its rounds, when parts run side by side
+    vtkSamplingDensity::ValueTable Values; // its fills' own: parts fill side by side
     vtkErrorDiffusionPointAssembler::HeldLayers Held; // final layers not written yet
     bool Direct = true;  // the writer: its layers go straight into the output
     bool Ended = false;  // its last layer was scanned in the round just run
@@ -265,6 +266,7 @@ public:
       this->Kernel.ReleaseLayerBuffers();
       this->Relaxation = vtkBlueNoiseRelaxation();
       this->Runner.ReleaseBuffers();
+      this->Values = vtkSamplingDensity::ValueTable();
     }
 
     // The held layers after the output's points, by the writer (the one
@@ -962,7 +964,8 @@ public:
     const int z = this->First + k;
     const vtkIdType begin = (z - this->Extent[4]) * this->LayerSize;
     const double sum =
-      this->Run.Density.Fill(this->Array, begin, begin + this->LayerSize, this->Ghosts, density);
+      this->Run.Density.Fill(
+        this->Array, begin, begin + this->LayerSize, this->Ghosts, density, this->Work.Values);
     if (z >= this->Work.First && z <= this->Work.Last)
     {
       this->Run.LayerSums[z - this->Run.Sampled[4]] = sum;
@@ -1259,11 +1262,13 @@ bool vtkErrorDiffusionSampler::SampleWhole(vtkImageData* input, vtkDataArray* ar
     this->UpdateProgress(run.ProgressDone / run.ProgressTotal);
     return !this->IsAborted();
   };
+  vtkSamplingDensity::ValueTable values;
   for (int z = run.Sampled[4]; z <= run.Sampled[5]; ++z)
   {
     const vtkIdType begin = (z - extent[4]) * layer;
     const vtkIdType k = z - run.Sampled[4];
-    run.LayerSums[k] = run.Density.Fill(array, begin, begin + layer, ghosts, density.data() + k * layer);
+    run.LayerSums[k] =
+      run.Density.Fill(array, begin, begin + layer, ghosts, density.data() + k * layer, values);
   }
   if (!report(filled))
   {

@@ -688,9 +688,9 @@ const char* vtkSamplingDensity::FixLinearMap(const vtkSamplingBudget* statistics
 
 //------------------------------------------------------------------------------
 double vtkSamplingDensity::Fill(vtkDataArray* array, vtkIdType begin, vtkIdType end,
-  const unsigned char* ghosts, float* out) const
+  const unsigned char* ghosts, float* out, ValueTable& table) const
 {
-  FillWorker worker{ this->Table };
+  FillWorker worker{ table };
   double sum = 0.0;
   if (!vtkArrayDispatch::Dispatch::Execute(array, worker, begin, end, this->Component, ghosts,
         this->Function, this->Scale, this->Map, out, sum))

@@ -122,12 +122,17 @@ public:
   /// The scale Finish set.
   double GetScale() const { return this->Scale; }
 
+  struct ValueTable;
+
   /**
    * The densities of tuples [begin, end) in order into `out`; returns their
-   * sum. Ghost flags as in CollectStatistics.
+   * sum. Ghost flags as in CollectStatistics. `table` is what Fill keeps from
+   * one call to the next (see ValueTable): threads that fill side by side
+   * each pass their own; Fill changes nothing else, so one density serves
+   * them all.
    */
   double Fill(vtkDataArray* array, vtkIdType begin, vtkIdType end, const unsigned char* ghosts,
-    float* out) const;
+    float* out, ValueTable& table) const;
 
 private:
   const char* FixLinearMap(const vtkSamplingBudget* statistics);
@@ -143,7 +148,8 @@ private:
 public:
   /// The densities of every 8- or 16-bit value, built by the first Fill of
   /// a run and kept for the next layers while type and map stay the same
-  /// (a 16-bit table costs as much as a 256^2 layer). For Fill only.
+  /// (a 16-bit table costs as much as a 256^2 layer), and the counts of the
+  /// values of the layer being filled. For Fill only, one per thread.
   struct ValueTable
   {
     int Type = -1; // VTK type of the values, -1 for none
@@ -167,7 +173,6 @@ public:
   };
 
 private:
-  mutable ValueTable Table;
   std::shared_ptr<SpareTallies> Spares = std::make_shared<SpareTallies>();
 };
 
