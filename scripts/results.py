@@ -289,7 +289,8 @@ def section_sampler(opts, scratch):
                      spread([b['x_tight'] for b in rs if 'x_tight' in b])])
     if rows:
         out += ['The error-diffusion kernel alone (its default parameters, the paper\'s Table 1; no',
-                'pipeline):', '']
+                'pipeline; below g = 0.05 its scan branches on whether a voxel fires, above',
+                'it does not, see `ScanRun` in `vtkErrorDiffusionScan.cxx`):', '']
         out += table(['cube', 'g', 'ms (median)', 'x_tight'], rows)
     rows = []
     for L, g, fl, busy, thread in sorted({k[:5] for k in filt_runs}):
