@@ -89,10 +89,13 @@ int main()
   {
     expected += sum;
   }
-  const auto run = [&](const char* threads, int slabs, int partLayers, int method) {
+  // On `image`, or on `volume` whose values are densities / `scale`.
+  const auto run = [&](const char* threads, int slabs, int partLayers, int method,
+                     vtkImageData* volume = nullptr, double scale = 1.0) {
     setenv("VTK_SMP_MAX_THREADS", threads, 1);
-    auto points = Sample(image, [&](vtkErrorDiffusionSampler* s) {
+    auto points = Sample(volume ? volume : image.Get(), [&](vtkErrorDiffusionSampler* s) {
       s->SetMethod(method);
+      s->SetDensityScale(scale);
       s->SetPartLayers(partLayers);
       s->SetPartVoxels(65536);
       s->SetNumberOfSlabs(slabs);
@@ -271,16 +274,7 @@ int main()
     }
     bytes->GetPointData()->SetScalars(values);
     const auto sample = [&](const char* threads) {
-      setenv("VTK_SMP_MAX_THREADS", threads, 1);
-      auto points = Sample(bytes, [&](vtkErrorDiffusionSampler* s) {
-        s->SetMethod(ed);
-        s->SetDensityScale(1.0 / 255.0);
-        s->SetPartLayers(PartLayers);
-        s->SetPartVoxels(65536);
-        s->SetSeed(7);
-      });
-      unsetenv("VTK_SMP_MAX_THREADS");
-      return points;
+      return run(threads, 1, PartLayers, ed, bytes, 1.0 / 255.0);
     };
     const auto expectedOf = [](vtkPolyData* points) {
       vtkDataArray* e = points->GetFieldData()->GetArray("ExpectedNumberOfPoints");
