@@ -5,14 +5,19 @@
 #define SamplerTestUtilities_h
 
 #include "BlueNoiseTestUtilities.h"
+#include "vtkBlueNoiseThreads.h"
 #include "vtkErrorDiffusionSampler.h"
 #include "vtkImageData.h"
 #include "vtkNew.h"
 #include "vtkPoints.h"
 #include "vtkPolyData.h"
+#include "vtkSMPTools.h"
 #include "vtkVersionMacros.h"
 
+#include <cstdlib>
 #include <cstring>
+#include <string>
+#include <thread>
 
 namespace bluenoise_test
 {
@@ -43,6 +48,29 @@ inline void Abort(vtkAlgorithm* algorithm)
 #else
   algorithm->SetAbortExecute(1);
 #endif
+}
+
+// Runs `job` on at most `threads` threads, the way a user limits them:
+// VTK_SMP_MAX_THREADS, which the module reads at each execution for the
+// threads it starts itself (Sequential backend). The other backends read the
+// variable once, at their first use, so a scope sets their count too. With
+// more than one thread asked for on a machine of more than one core, the job
+// must get more than one, or a comparison of thread counts compares nothing.
+inline void WithThreads(int threads, const std::function<void()>& job)
+{
+  setenv("VTK_SMP_MAX_THREADS", std::to_string(threads).c_str(), 1);
+  vtkSMPTools::LocalScope(vtkSMPTools::Config(threads, vtkSMPTools::GetBackend(),
+                            vtkSMPTools::GetNestedParallelism()),
+    [&] {
+      const int available = vtkBlueNoiseThreads::Available();
+      const bool several = threads > 1 && std::thread::hardware_concurrency() > 1;
+      Check(several ? available > 1 : threads > 1 || available == 1,
+        std::string("WithThreads(") + std::to_string(threads) + "): the module may use " +
+          std::to_string(available) + " thread(s) with the " + vtkSMPTools::GetBackend() +
+          " backend");
+      job();
+    });
+  unsetenv("VTK_SMP_MAX_THREADS");
 }
 
 // The same points, bit for bit, in the same order.

@@ -327,19 +327,20 @@ int main()
       values->SetValue(i, std::uniform_real_distribution<double>(0.0, 0.5)(random));
     }
     varied->GetPointData()->SetScalars(values);
-    const auto scaleOf = [&](const char* threads, int slabs) {
-      setenv("VTK_SMP_MAX_THREADS", threads, 1);
-      auto points = Sample(varied, [slabs](vtkErrorDiffusionSampler* s) {
-        s->UseNumberOfPointsOn();
-        s->SetNumberOfPoints(30000);
-        s->SetNumberOfSlabs(slabs);
+    const auto scaleOf = [&](int threads, int slabs) {
+      vtkSmartPointer<vtkPolyData> points;
+      WithThreads(threads, [&] {
+        points = Sample(varied, [slabs](vtkErrorDiffusionSampler* s) {
+          s->UseNumberOfPointsOn();
+          s->SetNumberOfPoints(30000);
+          s->SetNumberOfSlabs(slabs);
+        });
       });
-      unsetenv("VTK_SMP_MAX_THREADS");
       return points->GetFieldData()->GetArray("DensityScale")->GetTuple1(0);
     };
-    const double one = scaleOf("1", 1);
-    const double two = scaleOf("2", 1);
-    const double streamed = scaleOf("2", 7);
+    const double one = scaleOf(1, 1);
+    const double two = scaleOf(2, 1);
+    const double streamed = scaleOf(2, 7);
     Check(one > 0.0 && one == two && one == streamed,
       "the budget's scale with 1 and 2 threads and 7 slabs: " + Exact(one) + ", " + Exact(two) +
         ", " + Exact(streamed));

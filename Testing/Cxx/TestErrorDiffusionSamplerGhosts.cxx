@@ -15,8 +15,6 @@
 #include "vtkUnsignedCharArray.h"
 #include "vtkUnsignedShortArray.h"
 
-#include <cstdlib>
-#include <cstring>
 #include <string>
 
 using namespace bluenoise_test;
@@ -64,16 +62,6 @@ vtkSmartPointer<vtkImageData> Volume(bool zeroGhosts, bool withGhostArray)
   return image;
 }
 
-bool SamePoints(vtkPolyData* a, vtkPolyData* b)
-{
-  const vtkIdType n = a->GetNumberOfPoints();
-  return n == b->GetNumberOfPoints() &&
-    (n == 0 ||
-      std::memcmp(a->GetPoints()->GetData()->GetVoidPointer(0),
-        b->GetPoints()->GetData()->GetVoidPointer(0),
-        static_cast<size_t>(n) * 3 * a->GetPoints()->GetData()->GetDataTypeSize()) == 0);
-}
-
 vtkSmartPointer<vtkPolyData> Sampled(vtkImageData* image)
 {
   return Sample(image, [](vtkErrorDiffusionSampler* s) {
@@ -86,13 +74,14 @@ vtkSmartPointer<vtkPolyData> Sampled(vtkImageData* image)
 template <typename ArrayT>
 void CheckType(const std::string& type)
 {
-  for (const char* threads : { "1", "2" })
+  for (const int threads : { 1, 2 })
   {
-    setenv("VTK_SMP_MAX_THREADS", threads, 1);
-    const auto ghosted = Sampled(Volume<ArrayT>(false, true));
-    const auto zeroed = Sampled(Volume<ArrayT>(true, false));
-    unsetenv("VTK_SMP_MAX_THREADS");
-    const std::string what = type + ", " + threads + " thread(s)";
+    vtkSmartPointer<vtkPolyData> ghosted, zeroed;
+    WithThreads(threads, [&] {
+      ghosted = Sampled(Volume<ArrayT>(false, true));
+      zeroed = Sampled(Volume<ArrayT>(true, false));
+    });
+    const std::string what = type + ", " + Str(threads) + " thread(s)";
     Check(ghosted->GetNumberOfPoints() >= 1998 && ghosted->GetNumberOfPoints() <= 2002,
       what + ": the budget's 2000 points: " + Str(ghosted->GetNumberOfPoints()));
     Check(SamePoints(ghosted, zeroed),

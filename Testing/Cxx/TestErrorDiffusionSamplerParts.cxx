@@ -19,7 +19,6 @@
 #include "vtkTable.h"
 
 #include <cmath>
-#include <cstdlib>
 #include <iostream>
 #include <string>
 #include <vector>
@@ -90,18 +89,19 @@ int main()
     expected += sum;
   }
   // On `image`, or on `volume` whose values are densities / `scale`.
-  const auto run = [&](const char* threads, int slabs, int partLayers, int method,
+  const auto run = [&](int threads, int slabs, int partLayers, int method,
                      vtkImageData* volume = nullptr, double scale = 1.0) {
-    setenv("VTK_SMP_MAX_THREADS", threads, 1);
-    auto points = Sample(volume ? volume : image.Get(), [&](vtkErrorDiffusionSampler* s) {
-      s->SetMethod(method);
-      s->SetDensityScale(scale);
-      s->SetPartLayers(partLayers);
-      s->SetPartVoxels(65536);
-      s->SetNumberOfSlabs(slabs);
-      s->SetSeed(7);
+    vtkSmartPointer<vtkPolyData> points;
+    WithThreads(threads, [&] {
+      points = Sample(volume ? volume : image.Get(), [&](vtkErrorDiffusionSampler* s) {
+        s->SetMethod(method);
+        s->SetDensityScale(scale);
+        s->SetPartLayers(partLayers);
+        s->SetPartVoxels(65536);
+        s->SetNumberOfSlabs(slabs);
+        s->SetSeed(7);
+      });
     });
-    unsetenv("VTK_SMP_MAX_THREADS");
     return points;
   };
 
@@ -113,10 +113,10 @@ int main()
   for (const int method : { relaxed, ed })
   {
     const std::string name = method == ed ? "paper's method: " : "default method: ";
-    one = run("1", 1, PartLayers, method);
-    auto four = run("4", 1, PartLayers, method);
-    auto streamed = run("3", 7, PartLayers, method);
-    auto whole = run("4", 1, 65536, method);
+    one = run(1, 1, PartLayers, method);
+    auto four = run(4, 1, PartLayers, method);
+    auto streamed = run(3, 7, PartLayers, method);
+    auto whole = run(4, 1, 65536, method);
     Check(SamePoints(one, four), name + "1 and 4 threads: the same points (" +
         Str(one->GetNumberOfPoints()) + ", " + Str(four->GetNumberOfPoints()) + ")");
     Check(SamePoints(one, streamed), name + "in 7 slabs: the same points as in one go");
@@ -236,14 +236,7 @@ int main()
     }
     labelled->GetPointData()->AddArray(layers);
     labelled->GetPointData()->AddArray(names);
-    setenv("VTK_SMP_MAX_THREADS", "4", 1);
-    auto points = Sample(labelled, [&](vtkErrorDiffusionSampler* s) {
-      s->SetMethod(vtkErrorDiffusionSampler::METHOD_ERROR_DIFFUSION);
-      s->SetPartLayers(PartLayers);
-      s->SetPartVoxels(65536);
-      s->SetSeed(7);
-    });
-    unsetenv("VTK_SMP_MAX_THREADS");
+    auto points = run(4, 1, PartLayers, vtkErrorDiffusionSampler::METHOD_ERROR_DIFFUSION, labelled);
     auto* layer = vtkIntArray::SafeDownCast(points->GetPointData()->GetArray("layer"));
     auto* name = vtkStringArray::SafeDownCast(points->GetPointData()->GetAbstractArray("name"));
     bool carried = layer && name && SamePoints(points, one);
@@ -273,14 +266,14 @@ int main()
       sum += values->GetValue(v) / 255.0;
     }
     bytes->GetPointData()->SetScalars(values);
-    const auto sample = [&](const char* threads) {
+    const auto sample = [&](int threads) {
       return run(threads, 1, PartLayers, ed, bytes, 1.0 / 255.0);
     };
     const auto expectedOf = [](vtkPolyData* points) {
       vtkDataArray* e = points->GetFieldData()->GetArray("ExpectedNumberOfPoints");
       return e ? e->GetTuple1(0) : -1.0;
     };
-    auto single = sample("1");
+    auto single = sample(1);
     const double n = static_cast<double>(single->GetNumberOfPoints());
     Check(std::abs(n - sum) <= std::max(2.0, 0.0005 * sum) &&
         std::abs(expectedOf(single) - sum) <= 1e-6 * sum,
@@ -288,7 +281,7 @@ int main()
         ", the sum of the densities " + Str(sum));
     for (int run = 0; run < 3; ++run)
     {
-      auto four = sample("4");
+      auto four = sample(4);
       Check(SamePoints(four, single) && expectedOf(four) == expectedOf(single),
         "8-bit values in parts, 4 threads (run " + Str(run) +
           "): the points and the expected count of one thread");
@@ -297,7 +290,7 @@ int main()
 
   // White noise in parts: the same whatever the threads.
   const int white = vtkErrorDiffusionSampler::METHOD_WHITE_NOISE;
-  Check(SamePoints(run("1", 1, PartLayers, white), run("4", 3, PartLayers, white)),
+  Check(SamePoints(run(1, 1, PartLayers, white), run(4, 3, PartLayers, white)),
     "white noise in parts: the same points with 1 and 4 threads, in one go and in 3 slabs");
 
   // An abort between rounds: an empty output, and the next update samples.
