@@ -235,6 +235,13 @@ void vtkErrorDiffusionLayerRunner::ReleaseBuffers()
 }
 
 //------------------------------------------------------------------------------
+void vtkErrorDiffusionLayerRunner::SwapBuffers(vtkErrorDiffusionLayerRunner& other)
+{
+  this->Densities.swap(other.Densities);
+  this->Masks.swap(other.Masks);
+}
+
+//------------------------------------------------------------------------------
 bool vtkErrorDiffusionLayerRunner::RunSequential(vtkErrorDiffusionKernel& kernel)
 {
   try

@@ -116,6 +116,9 @@ public:
    */
   void ReleaseBuffers();
 
+  /// Trades the ring with `other`'s (see vtkErrorDiffusionScan::SwapLayerBuffers).
+  void SwapBuffers(vtkErrorDiffusionLayerRunner& other);
+
   /// Why the last Run failed; empty when it did not, or when Consume stopped it.
   const std::string& GetError() const { return this->Error; }
 

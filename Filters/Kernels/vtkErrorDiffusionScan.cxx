@@ -240,6 +240,21 @@ void vtkErrorDiffusionScan::ReleaseLayerBuffers()
 }
 
 //------------------------------------------------------------------------------
+void vtkErrorDiffusionScan::SwapLayerBuffers(vtkErrorDiffusionScan& other)
+{
+  this->Current.swap(other.Current);
+  this->Next.swap(other.Next);
+  this->Interior.swap(other.Interior);
+  this->InteriorWork.swap(other.InteriorWork);
+  this->ClassLow.swap(other.ClassLow);
+  this->ClassHigh.swap(other.ClassHigh);
+  this->ClassWork.swap(other.ClassWork);
+  this->ClassCurrent.swap(other.ClassCurrent);
+  this->ClassNext.swap(other.ClassNext);
+  this->ClassedLayer = other.ClassedLayer = nullptr;
+}
+
+//------------------------------------------------------------------------------
 void vtkErrorDiffusionScan::EndLayer()
 {
   std::swap(this->Current, this->Next);

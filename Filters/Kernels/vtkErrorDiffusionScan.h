@@ -219,6 +219,14 @@ public:
   void ReleaseLayerBuffers();
 
   /**
+   * Trades those buffers with `other`'s, before Begin: a scan that starts
+   * where another ended reuses its memory, whose pages are in place, rather
+   * than the fresh pages of an allocation (a fault each on first touch).
+   * Begin and the scan write every value before they read it.
+   */
+  void SwapLayerBuffers(vtkErrorDiffusionScan& other);
+
+  /**
    * Run the process translated by the constant `charge` on a box at constant
    * density g (vtkErrorDiffusionChargeCurve says which box) and return the
    * mean error the voxels away from its faces receive.

@@ -159,6 +159,7 @@ public:
   // charge curves it calibrated; a part's buffers (its kernel's error, its
   // relaxation's layers, its runner's slots) exist only from its first round
   // to its last, so parts side by side hold the memory of one part a thread.
+  // A part that starts where another ended takes over that one's buffers.
   struct Part : public vtkErrorDiffusionLayerBacklog::Sink
   {
     vtkInternals* Run = nullptr;
@@ -240,10 +241,20 @@ public:
 
     // Before its first round: the kernel a copy of the run's first kernel as
     // it began (its settings and charge curves), and the relaxation begun.
-    void Start(const vtkErrorDiffusionKernel& begun, std::uint64_t seed)
+    // With the buffers of `ended` (a part done with its rounds, or null): its
+    // memory is in place, where fresh pages would cost a fault each.
+    void Start(const vtkErrorDiffusionKernel& begun, std::uint64_t seed, Part* ended)
     {
       vtkInternals& run = *this->Run;
       this->Kernel = begun;
+      if (ended)
+      {
+        this->Kernel.SwapLayerBuffers(ended->Kernel);
+        this->Runner.SwapBuffers(ended->Runner);
+        std::swap(this->Relaxation, ended->Relaxation);
+        std::swap(this->Values, ended->Values);
+        ended->Release();
+      }
       this->Kernel.Begin(run.NX(), run.NY(), this->ScanFirst);
       this->StartRelaxation(seed);
       this->Held.SetRoom((this->Last - this->First + 1) * run.LayerSize()); // a point a voxel
@@ -1104,6 +1115,7 @@ bool vtkErrorDiffusionSampler::ScanParts(vtkImageData* input, vtkDataArray* arra
   size_t writer = 0;
   std::vector<Share*> tasks;
   std::vector<vtkInternals::Part*> done;
+  std::vector<vtkInternals::Part*> ended; // their buffers for the next parts to start
   for (;;)
   {
     done.clear();
@@ -1111,7 +1123,6 @@ bool vtkErrorDiffusionSampler::ScanParts(vtkImageData* input, vtkDataArray* arra
     {
       done.push_back(shares[writer].Part);
     }
-    run.WriteHeld(done);
     tasks.clear();
     for (size_t s = writer; s < shares.size() && tasks.size() < threads; ++s)
     {
@@ -1120,6 +1131,15 @@ bool vtkErrorDiffusionSampler::ScanParts(vtkImageData* input, vtkDataArray* arra
         tasks.push_back(&shares[s]);
       }
     }
+    // The buffers no part starting now takes go before the held layers grow
+    // the output.
+    const auto starting = static_cast<size_t>(std::count_if(
+      tasks.begin(), tasks.end(), [](const Share* task) { return !task->Part->Started; }));
+    for (; ended.size() > starting; ended.pop_back())
+    {
+      ended.back()->Release();
+    }
+    run.WriteHeld(done);
     if (tasks.empty())
     {
       break;
@@ -1128,7 +1148,12 @@ bool vtkErrorDiffusionSampler::ScanParts(vtkImageData* input, vtkDataArray* arra
     {
       if (!task->Part->Started)
       {
-        task->Part->Start(run.Begun, static_cast<std::uint64_t>(this->Seed));
+        vtkInternals::Part* from = ended.empty() ? nullptr : ended.back();
+        if (from)
+        {
+          ended.pop_back();
+        }
+        task->Part->Start(run.Begun, static_cast<std::uint64_t>(this->Seed), from);
       }
     }
     vtkBlueNoiseThreads::ForEach(static_cast<int>(tasks.size()), [&](int i) {
@@ -1172,7 +1197,7 @@ bool vtkErrorDiffusionSampler::ScanParts(vtkImageData* input, vtkDataArray* arra
       {
         share.Part->DropAheadPoints(diffusion);
         share.Part->Ended = false;
-        share.Part->Release();
+        ended.push_back(share.Part);
       }
       done += share.Next - std::max(step.First, share.Part->ScanFirst);
     }

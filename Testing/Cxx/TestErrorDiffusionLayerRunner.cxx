@@ -8,6 +8,8 @@
 // thread when the consumer is slow, the calling thread when the scan is.
 // Idle runs on the scan thread while it waits for a slow consumer, and is
 // called again as long as it had work.
+// A kernel and a runner that take over the buffers of others that ran
+// before them give the same masks.
 // Many short threaded runs end without a lost wake-up (a watchdog fails the
 // test when one stops making progress: a hang, not a timeout of CTest).
 #include "BlueNoiseTestUtilities.h"
@@ -50,10 +52,14 @@ void FillLayer(int z, float* out)
   }
 }
 
-vtkErrorDiffusionKernel MakeKernel()
+vtkErrorDiffusionKernel MakeKernel(vtkErrorDiffusionKernel* ended = nullptr)
 {
   vtkErrorDiffusionKernel kernel;
   kernel.SetSeed(5);
+  if (ended)
+  {
+    kernel.SwapLayerBuffers(*ended);
+  }
   kernel.Begin(NX, NY);
   return kernel;
 }
@@ -179,13 +185,32 @@ private:
   int NextFill = 0;
 };
 
+// takeOver: the kernel and the runner start with the buffers of a kernel and
+// a runner that ran before them (another seed, and stopped halfway: errors
+// left in them).
 Outcome RunWith(int mode, int stopAt = -1, int throwInFill = -1, int throwInConsume = -1,
-  bool external = false)
+  bool external = false, bool takeOver = false)
 {
   Outcome o;
   o.Mask.assign(LayerSize * NZ, 0);
-  auto kernel = MakeKernel();
+  vtkErrorDiffusionKernel ended;
+  vtkErrorDiffusionLayerRunner endedRunner;
+  if (takeOver)
+  {
+    Outcome before;
+    before.Mask.assign(LayerSize * NZ, 0);
+    ended.SetSeed(11);
+    ended.Begin(NX, NY);
+    endedRunner.SetThreaded(mode > 0);
+    Recorder stages(before, mode, -1, -1, -1, false);
+    endedRunner.Run(ended, stages, NX, NY, NZ / 2, true); // errors carried on left in it
+  }
+  auto kernel = MakeKernel(takeOver ? &ended : nullptr);
   vtkErrorDiffusionLayerRunner runner;
+  if (takeOver)
+  {
+    runner.SwapBuffers(endedRunner);
+  }
   runner.SetThreaded(mode > 0);
   Recorder stages(o, mode, stopAt, throwInFill, throwInConsume, external);
   o.Done = runner.Run(kernel, stages, NX, NY, NZ);
@@ -302,6 +327,11 @@ int main()
       Check(o.IdleOnScanThread && (threads > 0 || o.IdleCalls == 0) &&
           (threads != 2 || o.IdleCalls >= 2),
         "Idle called " + Str(o.IdleCalls) + " times, on the scan thread" + mode);
+    }
+    {
+      const Outcome o = RunWith(threads, -1, -1, -1, false, true);
+      Check(o.Done && o.Mask == reference,
+        "with the buffers of a kernel and a runner that ran before: the plain loop's masks" + mode);
     }
     {
       const Outcome o = RunWith(threads, 6);
