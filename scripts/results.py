@@ -289,8 +289,9 @@ def section_sampler(opts, scratch):
                      spread([b['x_tight'] for b in rs if 'x_tight' in b])])
     if rows:
         out += ['The error-diffusion kernel alone (its default parameters, the paper\'s Table 1; no',
-                'pipeline; below g = 0.05 its scan branches on whether a voxel fires, above',
-                'it does not, see `ScanRun` in `vtkErrorDiffusionScan.cxx`):', '']
+                'pipeline; below g = 0.05 and above 0.95 its scan branches on whether a voxel',
+                'fires, in between it does not, see `ScanRun` in `vtkErrorDiffusionScan.cxx`):',
+                '']
         out += table(['cube', 'g', 'ms (median)', 'x_tight'], rows)
     rows = []
     for L, g, fl, busy, thread in sorted({k[:5] for k in filt_runs}):
