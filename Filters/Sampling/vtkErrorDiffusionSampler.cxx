@@ -249,11 +249,7 @@ public:
       this->Kernel = begun;
       if (ended)
       {
-        this->Kernel.SwapLayerBuffers(ended->Kernel);
-        this->Runner.SwapBuffers(ended->Runner);
-        std::swap(this->Relaxation, ended->Relaxation);
-        std::swap(this->Values, ended->Values);
-        ended->Release();
+        this->TakeBuffers(*ended);
       }
       this->Kernel.Begin(run.NX(), run.NY(), this->ScanFirst);
       this->StartRelaxation(seed);
@@ -269,6 +265,16 @@ public:
       }
       this->Backlog.SetSink(this);
       this->Started = true;
+    }
+
+    // The buffers of a part that ended (Start), which keeps none.
+    void TakeBuffers(Part& ended)
+    {
+      this->Kernel.SwapLayerBuffers(ended.Kernel);
+      this->Runner.SwapBuffers(ended.Runner);
+      std::swap(this->Relaxation, ended.Relaxation);
+      std::swap(this->Values, ended.Values);
+      ended.Release();
     }
 
     // After its last round (and DropAheadPoints, which reads the kernel's error).
@@ -328,6 +334,9 @@ public:
   bool Cells = false;                       // the sites are the input's cells
   std::vector<Step> Steps;
   std::vector<std::unique_ptr<Part>> Parts; // at least one
+  // Parts done with their rounds whose buffers the parts that start next
+  // take over (ScanParts), a part a thread at most.
+  std::vector<Part*> Spares;
   // The first part's kernel as it began the run, without its buffers: what
   // the other parts start from (Part::Start).
   vtkErrorDiffusionKernel Begun;
@@ -355,11 +364,32 @@ public:
   // The layers that parts done with a step hold, after the output's points.
   void WriteHeld(const std::vector<Part*>& parts);
 
+  // Starts `part` with the buffers of one of the Spares, if any.
+  void StartPart(Part& part, std::uint64_t seed)
+  {
+    Part* spare = this->Spares.empty() ? nullptr : this->Spares.back();
+    if (spare)
+    {
+      this->Spares.pop_back();
+    }
+    part.Start(this->Begun, seed, spare);
+  }
+
+  // Frees the buffers of the Spares but `keep` of them.
+  void ReleaseSpares(size_t keep)
+  {
+    for (; this->Spares.size() > keep; this->Spares.pop_back())
+    {
+      this->Spares.back()->Release();
+    }
+  }
+
   // What a run held goes when it ends, or when a new pass of the pipeline
   // drops an unfinished one: the parts but the first (whose kernel outlives
   // the run), what they held, the points and the mask.
   void EndRun()
   {
+    this->Spares.clear();
     for (auto& part : this->Parts)
     {
       part->Backlog.Clear();
@@ -1115,7 +1145,6 @@ bool vtkErrorDiffusionSampler::ScanParts(vtkImageData* input, vtkDataArray* arra
   size_t writer = 0;
   std::vector<Share*> tasks;
   std::vector<vtkInternals::Part*> done;
-  std::vector<vtkInternals::Part*> ended; // their buffers for the next parts to start
   for (;;)
   {
     done.clear();
@@ -1133,12 +1162,8 @@ bool vtkErrorDiffusionSampler::ScanParts(vtkImageData* input, vtkDataArray* arra
     }
     // The buffers no part starting now takes go before the held layers grow
     // the output.
-    const auto starting = static_cast<size_t>(std::count_if(
-      tasks.begin(), tasks.end(), [](const Share* task) { return !task->Part->Started; }));
-    for (; ended.size() > starting; ended.pop_back())
-    {
-      ended.back()->Release();
-    }
+    run.ReleaseSpares(static_cast<size_t>(std::count_if(
+      tasks.begin(), tasks.end(), [](const Share* task) { return !task->Part->Started; })));
     run.WriteHeld(done);
     if (tasks.empty())
     {
@@ -1148,12 +1173,7 @@ bool vtkErrorDiffusionSampler::ScanParts(vtkImageData* input, vtkDataArray* arra
     {
       if (!task->Part->Started)
       {
-        vtkInternals::Part* from = ended.empty() ? nullptr : ended.back();
-        if (from)
-        {
-          ended.pop_back();
-        }
-        task->Part->Start(run.Begun, static_cast<std::uint64_t>(this->Seed), from);
+        run.StartPart(*task->Part, static_cast<std::uint64_t>(this->Seed));
       }
     }
     vtkBlueNoiseThreads::ForEach(static_cast<int>(tasks.size()), [&](int i) {
@@ -1197,7 +1217,7 @@ bool vtkErrorDiffusionSampler::ScanParts(vtkImageData* input, vtkDataArray* arra
       {
         share.Part->DropAheadPoints(diffusion);
         share.Part->Ended = false;
-        ended.push_back(share.Part);
+        run.Spares.push_back(share.Part);
       }
       done += share.Next - std::max(step.First, share.Part->ScanFirst);
     }
