@@ -138,9 +138,13 @@ def build_description(build, program=None):
     source = cache_value(build, 'BlueNoiseSampling_SOURCE_DIR') or cache_value(build, 'CMAKE_HOME_DIRECTORY')
     if source:
         try:
-            commit = subprocess.run(['git', '-C', source, 'describe', '--always', '--dirty'],
+            commit = subprocess.run(['git', '-C', source, 'rev-parse', '--short', 'HEAD'],
                                     capture_output=True, text=True, check=True).stdout.strip()
-            parts.append('source at commit `%s`' % commit)
+            # This page itself, written a section at a time, is no change to the source.
+            changed = subprocess.run(['git', '-C', source, 'status', '--porcelain', '--', '.',
+                                      ':!Documentation/Results.md'],
+                                     capture_output=True, text=True, check=True).stdout.strip()
+            parts.append('source at commit `%s%s`' % (commit, '-dirty' if changed else ''))
         except (OSError, subprocess.CalledProcessError):
             pass
     if program and os.path.exists(program):
