@@ -16,6 +16,7 @@
 
 #include <cstdlib>
 #include <cstring>
+#include <iostream>
 #include <string>
 #include <thread>
 
@@ -54,22 +55,37 @@ inline void Abort(vtkAlgorithm* algorithm)
 // VTK_SMP_MAX_THREADS, which the module reads at each execution for the
 // threads it starts itself (Sequential backend). The other backends read the
 // variable once, at their first use, so a scope sets their count too. With
-// more than one thread asked for on a machine of more than one core, the job
-// must get more than one, or a comparison of thread counts compares nothing.
+// more than one thread asked for where the backend can still give more than
+// one, the job must get more than one, or a comparison of thread counts
+// compares nothing. (Some cannot: VTK 9.6's TBB backend stays on one thread
+// in a process once it ran on one; that is said, not failed.)
 inline void WithThreads(int threads, const std::function<void()>& job)
 {
+  const auto scope = [](int n, const std::function<void()>& inside) {
+    vtkSMPTools::LocalScope(
+      vtkSMPTools::Config(n, vtkSMPTools::GetBackend(), vtkSMPTools::GetNestedParallelism()),
+      inside);
+  };
+  int most = 1;
+  scope(static_cast<int>(std::thread::hardware_concurrency()),
+    [&] { most = vtkSMPTools::GetEstimatedNumberOfThreads(); });
   setenv("VTK_SMP_MAX_THREADS", std::to_string(threads).c_str(), 1);
-  vtkSMPTools::LocalScope(vtkSMPTools::Config(threads, vtkSMPTools::GetBackend(),
-                            vtkSMPTools::GetNestedParallelism()),
-    [&] {
-      const int available = vtkBlueNoiseThreads::Available();
+  scope(threads, [&] {
+    const int available = vtkBlueNoiseThreads::Available();
+    const std::string what = std::string("WithThreads(") + std::to_string(threads) +
+      "): the module may use " + std::to_string(available) + " thread(s) with the " +
+      vtkSMPTools::GetBackend() + " backend";
+    if (threads > 1 && !vtkBlueNoiseThreads::SequentialBackend() && most < 2)
+    {
+      std::cout << what << ", which gives no more in this process\n";
+    }
+    else
+    {
       const bool several = threads > 1 && std::thread::hardware_concurrency() > 1;
-      Check(several ? available > 1 : threads > 1 || available == 1,
-        std::string("WithThreads(") + std::to_string(threads) + "): the module may use " +
-          std::to_string(available) + " thread(s) with the " + vtkSMPTools::GetBackend() +
-          " backend");
-      job();
-    });
+      Check(several ? available > 1 : threads > 1 || available == 1, what);
+    }
+    job();
+  });
   unsetenv("VTK_SMP_MAX_THREADS");
 }
 
