@@ -58,7 +58,9 @@ inline void Abort(vtkAlgorithm* algorithm)
 // more than one thread asked for where the backend can still give more than
 // one, the job must get more than one, or a comparison of thread counts
 // compares nothing. (Some cannot: VTK 9.6's TBB backend stays on one thread
-// in a process once it ran on one; that is said, not failed.)
+// in a process once a scope of one ended, so tests run their one-thread cases
+// last; where a process still asks for more after that, it is said, not
+// failed. The backend is asked at each call for that reason.)
 inline void WithThreads(int threads, const std::function<void()>& job)
 {
   const auto scope = [](int n, const std::function<void()>& inside) {

@@ -338,9 +338,10 @@ int main()
       });
       return points->GetFieldData()->GetArray("DensityScale")->GetTuple1(0);
     };
-    const double one = scaleOf(1, 1);
+    // Two threads first: see WithThreads.
     const double two = scaleOf(2, 1);
     const double streamed = scaleOf(2, 7);
+    const double one = scaleOf(1, 1);
     Check(one > 0.0 && one == two && one == streamed,
       "the budget's scale with 1 and 2 threads and 7 slabs: " + Exact(one) + ", " + Exact(two) +
         ", " + Exact(streamed));
