@@ -125,30 +125,66 @@ inline vtkIdType RunLength(const float* values, vtkIdType begin, vtkIdType end, 
   return t - begin;
 }
 
-// Adds 8-bit values [begin, end) to `table` eight at a time, the eight at
-// once where they are equal (backgrounds, flat regions); returns where it
-// stopped (fewer than eight before the end).
-template <typename T>
-vtkIdType CountBytes(const T* values, vtkIdType begin, vtkIdType end, std::uint64_t* table)
+// Counts 8-bit values [0, n) into `table` (CountLanes x Values counts) and,
+// with Fill, writes their densities (`density`, by value index) to `out`, in
+// one pass: sixteen equal values (backgrounds, flat regions) at once, their
+// count held until the value changes.
+template <typename T, bool Fill>
+void CountBytes(const T* values, vtkIdType n, std::uint64_t* table,
+  const float* density = nullptr, float* out = nullptr)
 {
   static_assert(sizeof(T) == 1 && CountLanes<T>() == 4, "four tables of 8-bit values");
   const auto index = [](T v) { return static_cast<size_t>(static_cast<int>(v) + ValueOffset<T>()); };
-  vtkIdType t = begin;
-  for (size_t lane = 0; t + 8 <= end; t += 8, lane = (lane + 1) & 3)
+  vtkIdType t = 0;
+  size_t lane = 0;
+#if defined(__SSE2__)
+  size_t run = 0;         // the value of the held count
+  std::uint64_t held = 0; // sixteens of `run` not yet in the table
+  for (; t + 16 <= n; t += 16)
   {
-    std::uint64_t word;
-    std::memcpy(&word, values + t, sizeof(word));
-    if (word == (word & 0xFF) * 0x0101010101010101ULL)
+    const __m128i sixteen = _mm_loadu_si128(reinterpret_cast<const __m128i*>(values + t));
+    const size_t v = index(values[t]);
+    if (_mm_movemask_epi8(_mm_cmpeq_epi8(sixteen, _mm_set1_epi8(static_cast<char>(values[t])))) ==
+      0xFFFF)
     {
-      table[lane * Values<T>() + index(values[t])] += 8;
+      if constexpr (Fill)
+      {
+        const __m128 g = _mm_set1_ps(density[v]);
+        for (int k = 0; k < 16; k += 4)
+        {
+          _mm_storeu_ps(out + t + k, g);
+        }
+      }
+      if (v != run)
+      {
+        table[run] += held;
+        run = v;
+        held = 0;
+      }
+      held += 16;
       continue;
     }
-    for (int k = 0; k < 8; ++k)
+    for (int k = 0; k < 16; ++k, lane = (lane + 1) & 3)
     {
-      ++table[(k & 3) * Values<T>() + index(values[t + k])];
+      const size_t u = index(values[t + k]);
+      if constexpr (Fill)
+      {
+        out[t + k] = density[u];
+      }
+      ++table[lane * Values<T>() + u];
     }
   }
-  return t;
+  table[run] += held;
+#endif
+  for (; t < n; ++t, lane = (lane + 1) & 3)
+  {
+    const size_t u = index(values[t]);
+    if constexpr (Fill)
+    {
+      out[t] = density[u];
+    }
+    ++table[lane * Values<T>() + u];
+  }
 }
 
 // Adds the values of one component over tuples [begin, end) to `table`
@@ -166,7 +202,8 @@ void CountComponent(const RangeT& all, int nc, int component, vtkIdType begin, v
   {
     if (!ghosts && nc == 1)
     {
-      t = CountBytes<T>(all.begin(), begin, end, table);
+      CountBytes<T, false>(all.begin() + begin, end - begin, table);
+      return;
     }
   }
   if (!ghosts)
@@ -517,17 +554,32 @@ struct FillWorker
     const std::vector<float>& table = cache.Density;
     const auto all = vtk::DataArrayValueRange(array);
     const int nc = array->GetNumberOfComponents();
+    // The sum from the counts per value (exact).
+    std::vector<std::uint64_t>& counts = cache.Counts;
+    counts.assign(CountLanes<T>() * values, 0);
+    if constexpr (sizeof(T) == 1 && std::is_pointer<decltype(all.begin())>::value)
+    {
+      if (!ghosts && nc == 1) // the common case, in one pass
+      {
+        CountBytes<T, true>(all.begin() + begin, end - begin, counts.data(), table.data(), out);
+        return SumOfCounts<T>(counts, table);
+      }
+    }
     for (vtkIdType t = begin; t < end; ++t)
     {
       const int v = static_cast<int>(all[t * nc + component]) + offset;
       out[t - begin] = (ghosts && (ghosts[t] & NotOwned)) ? 0.0f : table[v];
     }
-    // The sum from the counts per value (exact), in a pass of its own.
-    std::vector<std::uint64_t>& counts = cache.Counts;
-    counts.assign(CountLanes<T>() * values, 0);
     CountComponent<T>(all, nc, component, begin, end, ghosts, counts.data());
+    return SumOfCounts<T>(counts, table);
+  }
+
+  // The densities' sum from the counts per value.
+  template <typename T>
+  static double SumOfCounts(const std::vector<std::uint64_t>& counts, const std::vector<float>& table)
+  {
     double total = 0.0;
-    for (size_t v = 0; v < values; ++v)
+    for (size_t v = 0; v < Values<T>(); ++v)
     {
       total += static_cast<double>(CountOf<T>(counts, v)) * table[v];
     }

@@ -7,8 +7,9 @@
 // values at the edges (NaN, infinities, signed zeros, just below and above
 // the clamps), any start and length (the tails of the pairs and fours), and
 // an infinite scale. The sum Fill returns is the sum of the densities. 8-bit
-// values (a table of densities, the sum from counts per value, eight equal
-// values counted at once) in runs and not, and their statistics against the
+// values (a table of densities, the sum from counts per value, sixteen equal
+// values filled and counted at once, their count held across blocks of
+// sixteen) in runs and not, and their statistics against the
 // same values in a 16-bit array; float statistics with runs counted four at a
 // time against those counted one by one.
 #include "BlueNoiseTestUtilities.h"
@@ -109,12 +110,14 @@ vtkSmartPointer<ArrayT> Array(const std::vector<double>& values, int nc, int com
   return array;
 }
 
-// 8-bit values from `low` in runs of equal ones (counted eight at a time) and
+// 8-bit values from `low` in runs of equal ones (sixteen at a time where
+// they cover a block, one run over several blocks, equal runs apart) and
 // not, `repeats` times.
 std::vector<double> ByteRuns(int low, int repeats = 1)
 {
   std::vector<double> values;
-  const int runs[][2] = { { 9, 5 }, { 3, 200 }, { 17, 0 }, { 1, 7 }, { 8, 7 }, { 11, 255 } };
+  const int runs[][2] = { { 9, 5 }, { 3, 200 }, { 40, 0 }, { 1, 7 }, { 8, 7 }, { 35, 7 },
+    { 11, 255 }, { 20, 5 } };
   for (int r = 0; r < repeats; ++r)
   {
     for (const auto& run : runs)
@@ -129,7 +132,7 @@ std::vector<double> ByteRuns(int low, int repeats = 1)
   return values;
 }
 
-// The statistics of 8-bit values (counted eight at a time where equal) are
+// The statistics of 8-bit values (counted sixteen at a time where equal) are
 // those of the same values in a 16-bit array (counted one by one).
 template <typename ByteArrayT>
 bool CheckByteStatistics(const std::vector<double>& values, const char* what)
@@ -239,8 +242,8 @@ int main()
   // 16-bit values in layers this small are mapped directly (no table).
   CheckFills(Array<vtkShortArray>(ints, 1, 0), 0, ints, nullptr, 1.0 / 250.0, "short values");
   // 8-bit values: mapped through a table of densities from 1024 values on,
-  // their sum from the counts per value, eight equal values counted at once.
-  const std::vector<double> bytes = ByteRuns(0, 16); // 1104 values
+  // their sum from the counts per value, sixteen equal values at once.
+  const std::vector<double> bytes = ByteRuns(0, 16); // 2352 values
   const vtkIdType longest = static_cast<vtkIdType>(bytes.size());
   CheckFills(Array<vtkUnsignedCharArray>(bytes, 1, 0), 0, bytes, nullptr, 1.0 / 255.0,
     "unsigned char values", longest, longest - 80);
