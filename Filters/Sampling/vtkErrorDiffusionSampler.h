@@ -370,7 +370,10 @@ public:
   /**
    * For piece p > 0 of several, and for each z-part but the first (see
    * PartLayers): layers before it scanned first to settle the error pattern
-   * it enters with. In [0, 4096]. Default 16.
+   * it enters with. In [0, 4096]. Default 8: the relaxation's largest search
+   * radius (vtkBlueNoiseRelaxation::MaximumRadius), so that its context
+   * below a part is whole; the warm-up settles the pattern of the first
+   * overlap layer, and longer overlaps leave the seams as they are.
    */
   vtkSetClampMacro(OverlapLayers, int, 0, 4096);
   vtkGetMacro(OverlapLayers, int);
@@ -454,7 +457,7 @@ protected:
   int OutputPointsPrecision = SINGLE_PRECISION;
   bool UseWorkerThread = true;
   int NumberOfSlabs = 1;
-  int OverlapLayers = 16;
+  int OverlapLayers = 8;
   int PartLayers = 64;
   vtkIdType PartVoxels = vtkIdType(1) << 22;
 

@@ -285,7 +285,7 @@ defaults = {
     "UseNumberOfPoints": True, "NumberOfPoints": 100000, "DensityScale": 1.0, "ParameterSet": 3,
     "ParameterFile": "", "ModulationScale": 0.5, "Seed": 0, "WarmUpLayers": 8, "Jitter": False,
     "GenerateMask": False, "OutputPointsPrecision": 0, "UseWorkerThread": True, "NumberOfSlabs": 1,
-    "OverlapLayers": 16,
+    "OverlapLayers": 8,
 }
 for name, value in defaults.items():
     got = getattr(s, "Get" + name)()
