@@ -338,7 +338,7 @@ int main()
       });
       return points->GetFieldData()->GetArray("DensityScale")->GetTuple1(0);
     };
-    // Two threads first: see WithThreads.
+    // Two threads first (see WithThreads).
     const double two = scaleOf(2, 1);
     const double streamed = scaleOf(2, 7);
     const double one = scaleOf(1, 1);

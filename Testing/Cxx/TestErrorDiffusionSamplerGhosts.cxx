@@ -98,8 +98,7 @@ void CheckType(const std::string& type, int threads)
 
 int main()
 {
-  // Two threads first: VTK 9.6's TBB backend gives no more than one thread
-  // to a process once a scope of one ended.
+  // Two threads first (see WithThreads).
   for (const int threads : { 2, 1 })
   {
     CheckType<vtkUnsignedCharArray>("uint8", threads);

@@ -111,8 +111,7 @@ int main()
   // relaxation runs in each part.
   const int ed = vtkErrorDiffusionSampler::METHOD_ERROR_DIFFUSION;
   const int relaxed = vtkErrorDiffusionSampler::METHOD_RELAXED_ERROR_DIFFUSION;
-  // The runs on several threads come first: VTK 9.6's TBB backend gives no
-  // more than one thread to a process once a scope of one ended.
+  // The runs on several threads first (see WithThreads).
   std::map<int, std::array<vtkSmartPointer<vtkPolyData>, 3>> several;
   for (const int method : { relaxed, ed })
   {
