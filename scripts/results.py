@@ -390,7 +390,10 @@ def section_parts(opts, scratch):
 
 
 def section_pvpython(opts, scratch):
-    exe = program(opts.build, 'BenchmarkErrorDiffusionSampler')
+    library = os.path.join(opts.build, 'lib', 'libBlueNoiseTightScan.so')
+    if not os.path.exists(library):
+        raise Skip('`%s` not found (a build with -DBLUENOISE_BUILD_BENCHMARKS=ON and Google Benchmark)'
+                   % shown(library))
     plugins = sorted(glob.glob(os.path.join(opts.build, 'lib', 'paraview-*', 'plugins',
                                             'BlueNoiseSampling', 'BlueNoiseSampling.so')))
     pvpython = opts.pvpython or shutil.which('pvpython')
@@ -400,11 +403,11 @@ def section_pvpython(opts, scratch):
         raise Skip('no pvpython')
     sizes, repeats = ('256', 2) if opts.quick else ('256,512', 5)
     argv = [pvpython, os.path.join(ROOT, 'Testing/Benchmarks/pvpython_update_pipeline.py'),
-            '--plugin', plugins[-1], '--benchmark', exe, '--sizes', sizes, '--repeats', str(repeats)]
+            '--plugin', plugins[-1], '--tight-scan', library, '--sizes', sizes, '--repeats', str(repeats)]
     date, where = now(), machine()
     text = run(argv)
     shown_argv = [pvpython, 'Testing/Benchmarks/pvpython_update_pipeline.py', '--plugin',
-                  shown(plugins[-1]), '--benchmark', shown(exe), '--sizes', sizes,
+                  shown(plugins[-1]), '--tight-scan', shown(library), '--sizes', sizes,
                   '--repeats', str(repeats)]
     out = provenance(date, where, [command_line(shown_argv)],
                      build_description(opts.build, plugins[-1]),
@@ -414,11 +417,12 @@ def section_pvpython(opts, scratch):
             'first `UpdatePipeline` of a new proxy, as a first Apply (a fresh output; the',
             'built-in tables\' charges are known, nothing is calibrated); *again*: re-executions',
             'after a change of `Seed`, as a re-Apply (the first two not counted, see the script).',
-            'Each timed `UpdatePipeline` is followed by the tight loop (`BM_Plain`) under the',
-            'same load; x = loop / UpdatePipeline of each pair, for *again* the median and the',
-            'lowest in brackets. MiB: how much the process\'s resident memory grew during the',
-            '`UpdatePipeline` (a first execution faults its output in, a re-execution writes into',
-            'the memory of an earlier output).', '']
+            'Each timed `UpdatePipeline` is followed by the tight loop (fastest of 3) under the',
+            'same load, in pvpython\'s process on the array the sampler reads (the library',
+            '`BlueNoiseTightScan`, loaded with ctypes); x = loop / UpdatePipeline of each pair, for',
+            '*again* the median and the lowest in brackets. MiB: how much the process\'s resident',
+            'memory grew during the `UpdatePipeline` (a first execution faults its output in, a',
+            're-execution writes into the memory of an earlier output).', '']
     out += [l for l in text.splitlines() if l.startswith('|')] + ['']
     return out
 
