@@ -97,32 +97,32 @@ constexpr int ValueOffset() // added to a value to index its count
 }
 
 // How many of the floats from `begin` on (before `end`) have the bits `run`,
-// four at a time: stops at the first four that do not all have them.
+// four at a time: stops at the first four that do not all have them. (Plain
+// loads and compares: one implementation for every target, which compilers
+// turn into vector compares where there are some.)
 inline vtkIdType RunLength(const float* values, vtkIdType begin, vtkIdType end, std::uint32_t run)
 {
   vtkIdType t = begin;
-#if defined(__SSE2__)
-  const __m128i same = _mm_set1_epi32(static_cast<int>(run));
-  for (; t + 4 <= end; t += 4)
-  {
-    const __m128i four = _mm_loadu_si128(reinterpret_cast<const __m128i*>(values + t));
-    if (_mm_movemask_epi8(_mm_cmpeq_epi32(four, same)) != 0xFFFF)
-    {
-      break;
-    }
-  }
-#else
   for (; t + 4 <= end; t += 4)
   {
     std::uint32_t four[4];
     std::memcpy(four, values + t, sizeof(four));
-    if (four[0] != run || four[1] != run || four[2] != run || four[3] != run)
+    if ((four[0] ^ run) | (four[1] ^ run) | (four[2] ^ run) | (four[3] ^ run))
     {
       break;
     }
   }
-#endif
   return t - begin;
+}
+
+// Whether the sixteen bytes at `bytes` all equal `value`: two 64-bit words
+// against the value in every byte.
+inline bool SixteenEqual(const void* bytes, unsigned char value)
+{
+  std::uint64_t words[2];
+  std::memcpy(words, bytes, sizeof(words));
+  const std::uint64_t all = 0x0101010101010101ULL * value;
+  return ((words[0] ^ all) | (words[1] ^ all)) == 0;
 }
 
 // Counts 8-bit values [0, n) into `table` (CountLanes x Values counts) and,
@@ -137,23 +137,16 @@ void CountBytes(const T* values, vtkIdType n, std::uint64_t* table,
   const auto index = [](T v) { return static_cast<size_t>(static_cast<int>(v) + ValueOffset<T>()); };
   vtkIdType t = 0;
   size_t lane = 0;
-#if defined(__SSE2__)
   size_t run = 0;         // the value of the held count
   std::uint64_t held = 0; // sixteens of `run` not yet in the table
   for (; t + 16 <= n; t += 16)
   {
-    const __m128i sixteen = _mm_loadu_si128(reinterpret_cast<const __m128i*>(values + t));
     const size_t v = index(values[t]);
-    if (_mm_movemask_epi8(_mm_cmpeq_epi8(sixteen, _mm_set1_epi8(static_cast<char>(values[t])))) ==
-      0xFFFF)
+    if (SixteenEqual(values + t, static_cast<unsigned char>(values[t])))
     {
       if constexpr (Fill)
       {
-        const __m128 g = _mm_set1_ps(density[v]);
-        for (int k = 0; k < 16; k += 4)
-        {
-          _mm_storeu_ps(out + t + k, g);
-        }
+        std::fill_n(out + t, 16, density[v]);
       }
       if (v != run)
       {
@@ -175,7 +168,6 @@ void CountBytes(const T* values, vtkIdType n, std::uint64_t* table,
     }
   }
   table[run] += held;
-#endif
   for (; t < n; ++t, lane = (lane + 1) & 3)
   {
     const size_t u = index(values[t]);
