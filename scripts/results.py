@@ -279,7 +279,7 @@ def section_sampler(opts, scratch):
         else '%d repetitions of every case' % reps)
     out += [
         'x_tight = the time of the tight single-threaded loop of the paper\'s scan (`TightScan`',
-        'in the benchmark program says what it does and does not do) on the same',
+        'in `Testing/Benchmarks/BlueNoiseTightScan.h` says what it does and does not do) on the same',
         'cube (fastest of 3, timed right before the case and, for the filter, right after it',
         'too: the faster of the two) / the time of the case; higher is faster. Each cell:',
         'the median of the repetitions, the lowest in brackets (one value for one',
