@@ -612,14 +612,87 @@ inline bool vtkBlueNoiseRelaxation::InRegion(int x, int y, int dz, int cls) cons
 //------------------------------------------------------------------------------
 // Whether the voxels along face f's axis within Radius of sample (x, y) of
 // the layer relaxed and of its neighbor there (Radius + 1 on the face's side,
-// Radius on the other) are all in the region of class `cls`.
-bool vtkBlueNoiseRelaxation::LineInRegion(int x, int y, int face, int cls) const
+// Radius on the other) are all in the region of class `cls`. Where every
+// voxel of positive density within Reach is of a class alike (`alike`), only
+// the volume, the run's layers and the densities' support can end the line:
+// LineSupported reads those a word or a bit at a time.
+bool vtkBlueNoiseRelaxation::LineInRegion(int x, int y, int face, int cls, bool alike) const
 {
+  if (alike)
+  {
+    return this->LineSupported(x, y, face);
+  }
   const int* f = Faces[face];
   const int r = this->Radius;
   for (int t = -r; t <= r + 1; ++t)
   {
     if (!this->InRegion(x + t * f[0], y + t * f[1], t * f[2], cls))
+    {
+      return false;
+    }
+  }
+  return true;
+}
+
+//------------------------------------------------------------------------------
+// LineInRegion without the classes: the line in the volume (in the run's
+// layers) and of positive densities only.
+bool vtkBlueNoiseRelaxation::LineSupported(int x, int y, int face) const
+{
+  const int* f = Faces[face];
+  const int axis = f[0] != 0 ? 0 : (f[1] != 0 ? 1 : 2);
+  const int sign = f[axis];
+  const int r = this->Radius;
+  // The line's ends along its axis, from the sample (0 at the sample).
+  const int low = sign > 0 ? -r : -r - 1;
+  const int high = sign > 0 ? r + 1 : r;
+  const auto supported = [this](const Slot* slot, int vx, int vy) {
+    return slot->Full || ((this->Row(slot->Support.data(), vy)[vx >> 6] >> (vx & 63)) & 1);
+  };
+  const Slot* center = this->Slots[Reach];
+  if (axis == 2)
+  {
+    for (int dz = low; dz <= high; ++dz)
+    {
+      const Slot* slot = this->Slots[dz + Reach];
+      if (!slot || !supported(slot, x, y))
+      {
+        return false;
+      }
+    }
+    return true;
+  }
+  if (axis == 1)
+  {
+    if (y + low < 0 || y + high >= this->NY)
+    {
+      return false;
+    }
+    for (int dy = low; dy <= high; ++dy)
+    {
+      if (!supported(center, x, y + dy))
+      {
+        return false;
+      }
+    }
+    return true;
+  }
+  const int from = x + low, to = x + high;
+  if (from < 0 || to >= this->NX)
+  {
+    return false;
+  }
+  if (center->Full)
+  {
+    return true;
+  }
+  const std::uint64_t* row = this->Row(center->Support.data(), y);
+  for (int w = from >> 6; w <= to >> 6; ++w) // the bits from..to, a word at a time
+  {
+    const int first = std::max(from, 64 * w) - 64 * w;
+    const int last = std::min(to, 64 * w + 63) - 64 * w;
+    const std::uint64_t mask = (~std::uint64_t(0) >> (63 - last)) & (~std::uint64_t(0) << first);
+    if ((row[w] & mask) != mask)
     {
       return false;
     }
@@ -689,16 +762,14 @@ void vtkBlueNoiseRelaxation::RelaxSample(int x, int y, int z, float g)
   // Where densities are mixed, the samples of other densities leave the
   // window. None of them fills a voxel the sample may move to: that voxel's
   // density is within DensityTolerance of the sample's, so of a similar class.
-  if (this->Mixed)
+  const bool alike = !this->Mixed || !this->MixedAround(x, y, cls);
+  if (!alike)
   {
-    if (this->MixedAround(x, y, cls))
+    this->KeepSimilar(loaded, x, y, cls);
+    current = this->Nearest(0, 0, 0, -1);
+    if (current >= this->Limit)
     {
-      this->KeepSimilar(loaded, x, y, cls);
-      current = this->Nearest(0, 0, 0, -1);
-      if (current >= this->Limit)
-      {
-        return;
-      }
+      return;
     }
   }
   int order[6];
@@ -721,7 +792,7 @@ void vtkBlueNoiseRelaxation::RelaxSample(int x, int y, int z, float g)
     const float* density = this->Densities[f[2] + 1];
     const float gc = density[X + static_cast<size_t>(this->NX) * Y];
     if (!Relaxable(gc) || std::abs(gc - g) > DensityTolerance * g ||
-      (!this->Whole && !this->LineInRegion(x, y, face, cls)))
+      (!this->Whole && !this->LineInRegion(x, y, face, cls, alike)))
     {
       continue;
     }

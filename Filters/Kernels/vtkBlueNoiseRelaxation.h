@@ -54,6 +54,10 @@
  * continuous Poisson-disk set's of the same count, lowers S(g) and leaves the
  * anisotropy as it was (Testing/QualityReport.md has the figures).
  *
+ * Samples are at voxels of positive density, as error diffusion places them:
+ * one at a density of 0 never moves, and whether a search sees it is left
+ * undefined (where the densities around are all similar it does).
+ *
  * Streaming: Push() one layer after another (densities and mask, x fastest);
  * once the layers from z - 1 to z + w are in, layer z is relaxed (its samples
  * may move into z - 1, z or z + 1) and layer z - 1 becomes final: Push
@@ -74,6 +78,8 @@
  * sample, and the nearest sample in a row is found from the bit counts on
  * either side of the voxel, without a loop over the row's samples; the rows
  * at one distance from the voxel's, four at a time, are searched as one.
+ * Where every density within reach of a sample is similar to its own, the
+ * lines of the faces' rule are read from the bits of the densities' support.
  */
 #ifndef vtkBlueNoiseRelaxation_h
 #define vtkBlueNoiseRelaxation_h
@@ -196,7 +202,8 @@ private:
   unsigned BlockedFaces(int x, int y) const;
   unsigned CrowdedFaces(int reach) const;
   bool InRegion(int x, int y, int dz, int cls) const;
-  bool LineInRegion(int x, int y, int face, int cls) const;
+  bool LineInRegion(int x, int y, int face, int cls, bool alike) const;
+  bool LineSupported(int x, int y, int face) const;
   unsigned BandFaces(int x, int y) const;
   void SortOrder();
   void RelaxLayer(int z);

@@ -3,8 +3,8 @@
 // vtkBlueNoiseRelaxation against its definition (the class comment), written
 // here the plain way: the whole volume in memory, the nearest sample by a loop
 // over the box around a voxel. Random masks over densities that vary by voxel
-// (within and beyond the move tolerance, above 1/4 and 0, and whole layers
-// where nothing moves), at several volume shapes (rows shorter and longer
+// (within and beyond the move tolerance, above 1/4 and 0, whole layers
+// where nothing moves, and similar densities with holes of 0), at several volume shapes (rows shorter and longer
 // than a word), pushed layer by layer:
 // the relaxed masks must be the same bit for bit, and the counts kept (in
 // all, and in each layer returned).
@@ -165,12 +165,16 @@ void Relax(Volume& v, std::uint64_t seed)
 }
 
 // Densities: a few values per region, some within the tolerance of each other;
-// with `bands`, whole layers no sample may move in (0 and 0.3) between them.
-Volume Random(int nx, int ny, int nz, std::uint32_t seed, bool bands = false, bool constant = false)
+// with `bands`, whole layers no sample may move in (0 and 0.3) between them;
+// with `holes`, densities of one class only (similar everywhere), with
+// regions and single voxels of 0 among them (the support alone ends lines).
+Volume Random(int nx, int ny, int nz, std::uint32_t seed, bool bands = false, bool constant = false,
+  bool holes = false)
 {
   std::mt19937 random(seed);
   Volume v{ { nx, ny, nz }, {}, {} };
   const float levels[] = { 0.0f, 4.0f / 255, 8.0f / 255, 8.05f / 255, 32.0f / 255, 0.25f, 0.3f };
+  const float alike[] = { 0.0f, 8.0f / 255, 8.05f / 255, 10.0f / 255, 8.0f / 255, 8.0f / 255, 8.0f / 255 };
   std::uniform_int_distribution<int> pick(0, 6);
   std::uniform_real_distribution<float> unit(0.0f, 1.0f);
   v.Density.resize(static_cast<size_t>(nx) * ny * nz);
@@ -179,7 +183,7 @@ Volume Random(int nx, int ny, int nz, std::uint32_t seed, bool bands = false, bo
   std::vector<float> region(static_cast<size_t>(nx / block + 1) * (ny / block + 1) * (nz / block + 1));
   for (float& g : region)
   {
-    g = levels[pick(random)];
+    g = holes ? alike[pick(random)] : levels[pick(random)];
   }
   for (int z = 0; z < nz; ++z)
   {
@@ -190,9 +194,14 @@ Volume Random(int nx, int ny, int nz, std::uint32_t seed, bool bands = false, bo
         const size_t r = x / block + (nx / block + 1) * (y / block + (ny / block + 1) * (z / block));
         const size_t i = v.Index(x, y, z);
         v.Density[i] = constant ? 24.0f / 255
+          : holes ? (unit(random) < 0.03f ? 0.0f : region[r])
           : !bands || (z / 4) % 3 == 0 ? region[r]
                                         : (z / 4) % 3 == 1 ? 0.0f : 0.3f;
         v.Mask[i] = unit(random) < 2.0f * std::max(v.Density[i], 0.02f) ? 1 : 0;
+        if (holes && !(v.Density[i] > 0.0f))
+        {
+          v.Mask[i] = 0; // as the sampler's masks (see main)
+        }
       }
     }
   }
@@ -207,12 +216,13 @@ int main()
     { 24, 22, 30 } };
   for (const auto& shape : shapes)
   {
-    for (std::uint64_t seed : { 1u, 77u, 5u, 9u })
+    for (std::uint64_t seed : { 1u, 77u, 5u, 9u, 13u, 21u })
     {
       // Seed 5: bands of 4 layers that relax, then 4 of 0, then 4 of 0.3.
       // Seed 9: one density everywhere (the faces of the volume alone).
+      // Seeds 13 and 21: similar densities with holes of 0.
       Volume v = Random(shape[0], shape[1], shape[2], static_cast<std::uint32_t>(seed + shape[0]),
-        seed == 5, seed == 9);
+        seed == 5, seed == 9, seed == 13 || seed == 21);
       const auto count = std::count(v.Mask.begin(), v.Mask.end(), 1);
       const size_t layer = static_cast<size_t>(shape[0]) * shape[1];
       std::vector<unsigned char> relaxed(v.Mask.size(), 2);
