@@ -18,11 +18,12 @@ identity mapping and a budget of g * voxels (what BM_Filter does):
 Each timed UpdatePipeline is followed by the tight single-threaded loop of the
 same scan (BlueNoiseTightScan.h: fastest of 3) under the same load, in this
 process (the library BlueNoiseTightScan, loaded with ctypes) on the array the
-sampler reads: x = loop seconds / UpdatePipeline seconds of each pair; re-executions print the
-median and the lowest ratio; MiB = how much the process's resident memory grew
-during the UpdatePipeline (a first execution faults its output in; a
-re-execution writes into the memory of an earlier output). No thresholds: figures for
-Documentation/Results.md (scripts/results.py).
+sampler reads: x = loop seconds / UpdatePipeline seconds of each pair;
+re-executions print the median and the lowest ratio; MiB = how much the
+process's resident memory grew during the UpdatePipeline (a first execution
+faults its output in; a re-execution writes into the memory of an earlier
+output). No thresholds: figures for Documentation/Results.md
+(scripts/results.py).
 """
 import argparse
 import ctypes
