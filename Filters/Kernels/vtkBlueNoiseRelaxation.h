@@ -55,8 +55,8 @@
  * anisotropy as it was (Testing/QualityReport.md has the figures).
  *
  * Samples are at voxels of positive density, as error diffusion places them:
- * one at a density of 0 never moves, and whether a search sees it is left
- * undefined (where the densities around are all similar it does).
+ * one at a density of 0 never moves, and the searches count it only where
+ * every positive density within reach is similar to the searching sample's.
  *
  * Streaming: Push() one layer after another (densities and mask, x fastest);
  * once the layers from z - 1 to z + w are in, layer z is relaxed (its samples

@@ -200,7 +200,7 @@ Volume Random(int nx, int ny, int nz, std::uint32_t seed, bool bands = false, bo
         v.Mask[i] = unit(random) < 2.0f * std::max(v.Density[i], 0.02f) ? 1 : 0;
         if (holes && !(v.Density[i] > 0.0f))
         {
-          v.Mask[i] = 0; // as the sampler's masks (see main)
+          v.Mask[i] = 0; // as error diffusion places them (the class comment)
         }
       }
     }
