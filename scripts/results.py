@@ -367,13 +367,13 @@ def section_parts(opts, scratch):
         'one run of every case' if not opts.quick else 'quick (512^3 at 8/255 only)')
     out += [
         'The sampler cuts a volume into z-parts (*Part Layers*, *Part Voxels*) and samples',
-        'them side by side, one per thread, a round of layers at a time. x_N = the time of',
-        'the whole cube in one part on one thread / the wall time the rounds would take on N',
-        'threads: each part\'s own layers and its overlap timed alone on one thread (so',
-        'the overlap\'s extra scan is counted, with its relaxation and points) and the',
-        'filter\'s rounds replayed, the longest part of each round setting its time. No',
-        'thread is started: the machine measuring need not have N cores. Constant uint8',
-        'cubes, a budget of g x voxels.',
+        'them side by side, each thread taking the next part when its own is done. x_N =',
+        'the time of the whole cube in one part on one thread / the wall time the parts',
+        'would take on N threads: each part\'s own layers and its overlap timed alone on',
+        'one thread (so the overlap\'s extra scan is counted, with its relaxation and',
+        'points) and the filter\'s schedule replayed, the next part going to the first',
+        'thread free. No thread is started: the machine measuring need not have N',
+        'cores. Constant uint8 cubes, a budget of g x voxels.',
         '']
     rows = []
     for key, rs in sorted(runs.items(), key=lambda kv: (named_args(kv[0])[1]['L'],

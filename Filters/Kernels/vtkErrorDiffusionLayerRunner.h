@@ -112,7 +112,7 @@ public:
 
   /**
    * Frees the ring of layer buffers, which a runner keeps from one Run to the
-   * next (a run in rounds of a few layers) until this or its destruction.
+   * next (a run in chunks of a few layers) until this or its destruction.
    */
   void ReleaseBuffers();
 

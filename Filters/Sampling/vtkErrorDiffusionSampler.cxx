@@ -31,8 +31,11 @@
 
 #include <algorithm>
 #include <array>
+#include <atomic>
+#include <chrono>
 #include <cmath>
 #include <cstdlib>
+#include <mutex>
 #include <new>
 #include <sstream>
 #include <string>
@@ -143,6 +146,7 @@ class vtkErrorDiffusionSampler::vtkInternals
 {
 public:
   class SlabScan;
+  class Schedule;
 
   struct Step
   {
@@ -155,11 +159,12 @@ public:
   // relaxation. A run in one part adds each final layer to the output at
   // once; of parts scanned side by side only the writer does, the others
   // keep their final layers compacted until they are the writer (see
-  // ScanParts). Parts live from run to run, the first one's kernel with the
+  // Schedule). Parts live from run to run, the first one's kernel with the
   // charge curves it calibrated; a part's buffers (its kernel's error, its
-  // relaxation's layers, its runner's slots) exist only from its first round
+  // relaxation's layers, its runner's slots) exist only from its first chunk
   // to its last, so parts side by side hold the memory of one part a thread.
-  // A part that starts where another ended takes over that one's buffers.
+  // A part that a thread starts after it ended another takes over that one's
+  // buffers.
   struct Part : public vtkErrorDiffusionLayerBacklog::Sink
   {
     vtkInternals* Run = nullptr;
@@ -169,11 +174,10 @@ public:
     vtkErrorDiffusionKernel Kernel;
     vtkBlueNoiseRelaxation Relaxation;
     vtkErrorDiffusionLayerBacklog Backlog; // the relaxation's final layers, to Emit
-    vtkErrorDiffusionLayerRunner Runner;   // its rounds, when parts run side by side
+    vtkErrorDiffusionLayerRunner Runner;   // its chunks, when parts run side by side
     vtkSamplingDensity::ValueTable Values; // its fills' own: parts fill side by side
     vtkErrorDiffusionPointAssembler::HeldLayers Held; // final layers not written yet
-    bool Direct = true;  // the writer: its layers go straight into the output
-    bool Ended = false;  // its last layer was scanned in the round just run
+    bool Direct = true;   // the writer: its layers go straight into the output
     bool Started = false; // its buffers are made (Start)
 
     // A final layer of samples: into the points (or held, see above), and
@@ -239,9 +243,9 @@ public:
       return std::max(this->ScanFirst, this->First - vtkBlueNoiseRelaxation::MaximumRadius);
     }
 
-    // Before its first round: the kernel a copy of the run's first kernel as
+    // Before its first chunk: the kernel a copy of the run's first kernel as
     // it began (its settings and charge curves), and the relaxation begun.
-    // With the buffers of `ended` (a part done with its rounds, or null): its
+    // With the buffers of `ended` (a part done with its chunks, or null): its
     // memory is in place, where fresh pages would cost a fault each.
     void Start(const vtkErrorDiffusionKernel& begun, std::uint64_t seed, Part* ended)
     {
@@ -277,7 +281,8 @@ public:
       ended.Release();
     }
 
-    // After its last round (and DropAheadPoints, which reads the kernel's error).
+    // After its last chunk (and DropAheadPoints, which reads the kernel's
+    // error). Its held layers are not touched: the writer may be writing them.
     void Release()
     {
       this->Kernel.ReleaseLayerBuffers();
@@ -334,9 +339,6 @@ public:
   bool Cells = false;                       // the sites are the input's cells
   std::vector<Step> Steps;
   std::vector<std::unique_ptr<Part>> Parts; // at least one
-  // Parts done with their rounds whose buffers the parts that start next
-  // take over (ScanParts), a part a thread at most.
-  std::vector<Part*> Spares;
   // The first part's kernel as it began the run, without its buffers: what
   // the other parts start from (Part::Start).
   vtkErrorDiffusionKernel Begun;
@@ -361,35 +363,11 @@ public:
 
   Part& First() { return *this->Parts.front(); }
 
-  // The layers that parts done with a step hold, after the output's points.
-  void WriteHeld(const std::vector<Part*>& parts);
-
-  // Starts `part` with the buffers of one of the Spares, if any.
-  void StartPart(Part& part, std::uint64_t seed)
-  {
-    Part* spare = this->Spares.empty() ? nullptr : this->Spares.back();
-    if (spare)
-    {
-      this->Spares.pop_back();
-    }
-    part.Start(this->Begun, seed, spare);
-  }
-
-  // Frees the buffers of the Spares but `keep` of them.
-  void ReleaseSpares(size_t keep)
-  {
-    for (; this->Spares.size() > keep; this->Spares.pop_back())
-    {
-      this->Spares.back()->Release();
-    }
-  }
-
   // What a run held goes when it ends, or when a new pass of the pipeline
   // drops an unfinished one: the parts but the first (whose kernel outlives
   // the run), what they held, the points and the mask.
   void EndRun()
   {
-    this->Spares.clear();
     for (auto& part : this->Parts)
     {
       part->Backlog.Clear();
@@ -857,7 +835,6 @@ bool vtkErrorDiffusionSampler::StartRun(vtkInformation*, vtkInformationVector**)
   {
     part->Held.Clear();
     part->Direct = true;
-    part->Ended = false;
     part->Started = false;
   }
   run.Points = vtkSmartPointer<vtkPolyData>::New();
@@ -985,7 +962,7 @@ class vtkErrorDiffusionSampler::vtkInternals::SlabScan
 {
 public:
   SlabScan(vtkErrorDiffusionSampler* filter, Part& part, vtkImageData* input,
-    vtkDataArray* array, int first, int last, bool report)
+    vtkDataArray* array, int first, int last, double report)
     : Filter(filter)
     , Run(*filter->Internals)
     , Work(part)
@@ -1038,11 +1015,11 @@ public:
   bool Consume(const vtkErrorDiffusionLayerRunner::Layer& l) override
   {
     this->Work.Receive(this->First + l.Index, l.Density, l.Mask, l.Count);
-    if (!this->Report)
+    if (this->Report <= 0.0)
     {
       return true;
     }
-    this->Run.ProgressDone += 1.0;
+    this->Run.ProgressDone += this->Report;
     if (l.Index % this->ProgressStride == 0)
     {
       this->Filter->UpdateProgress(this->Run.ProgressDone / this->Run.ProgressTotal);
@@ -1057,7 +1034,7 @@ private:
   int First;
   vtkDataArray* Array;
   vtkIdType LayerSize;
-  bool Report;
+  double Report; // the progress a layer adds (in layers of the step), or 0: none
   int ProgressStride;
   int Extent[6];
   const unsigned char* Ghosts = nullptr;
@@ -1088,7 +1065,7 @@ bool vtkErrorDiffusionSampler::ScanSlab(vtkImageData* input, vtkDataArray* array
   const int layers = step.Last - step.First + 1;
   vtkErrorDiffusionLayerRunner runner;
   runner.SetThreaded(this->WorkerThreadFor(layers));
-  vtkInternals::SlabScan stages(this, part, input, array, step.First, step.Last, true);
+  vtkInternals::SlabScan stages(this, part, input, array, step.First, step.Last, 1.0);
   if (!runner.Run(part.Kernel, stages, run.NX(), run.NY(), layers, step.Last < run.Sampled[5]))
   {
     part.Backlog.Clear();
@@ -1103,173 +1080,343 @@ bool vtkErrorDiffusionSampler::ScanSlab(vtkImageData* input, vtkDataArray* array
 }
 
 //------------------------------------------------------------------------------
-// One sampling step in parts side by side, a round of a few layers at a time:
-// each round scans the lowest parts of the step that are not done, one per
-// thread allowed. The lowest part whose points are not all in the output (the
-// writer) adds its layers to the output as they come, after the layers it
-// held; the others hold theirs until they are the writer. So the points are
-// in z order, part after part, whatever the threads. Between rounds the
-// calling thread drops the points a part that ended fired ahead of their mass
-// (see FinishOutput), reports progress and honors abort.
-bool vtkErrorDiffusionSampler::ScanParts(vtkImageData* input, vtkDataArray* array)
+// The parts of one step scanned side by side, in epochs with no wait between
+// threads within one: in an epoch each thread takes the lowest part that no
+// thread holds and is not done, scans it a chunk of layers at a time, and
+// takes the next when that part is done, until the epoch's time is up. The
+// lowest part whose points are not all in the output (the writer) adds its
+// layers to the output as they come; the others hold theirs. A part becomes
+// the writer at the start of a chunk once every part below it is in the
+// output: the thread that finishes the writer writes the held layers of the
+// parts after it that are done too, and hands the output on to the first one
+// that is not. So the points are in z order, part after part, whatever the
+// threads and their timing. Between epochs the calling thread (which any
+// backend may leave out of the epoch's threads) reports progress and honors
+// abort. The last part left, or every part when one thread is allowed, is
+// scanned by the calling thread at once, reporting layer by layer, with the
+// scan on a worker thread beside it as a volume of one part does.
+class vtkErrorDiffusionSampler::vtkInternals::Schedule
 {
-  vtkInternals& run = *this->Internals;
-  const vtkInternals::Step& step = run.Steps[run.Current];
+public:
+  Schedule(vtkErrorDiffusionSampler* self, vtkImageData* input, vtkDataArray* array);
+
+  // Every part of the step on up to `threads` threads; false on an error
+  // (reported) or an abort.
+  bool Scan(int threads);
+
+private:
+  using Clock = std::chrono::steady_clock;
+
   struct Share
   {
-    vtkInternals::Part* Part;
-    int Next;
+    Part* Target;
+    int Next; // layers of the step still to scan: Next .. Last
     int Last;
-    std::string Error;
-    bool Done() const { return this->Next > this->Last; }
+    bool Busy = false; // a thread holds it
+    bool Done = false; // scanned, its points in the output or held
   };
-  std::vector<Share> shares;
-  double total = 0.0;
-  for (auto& part : run.Parts)
+
+  void Work(Clock::time_point end);
+  Share* Take();
+  bool ScanChunk(Share& share);
+  bool ScanRest(Share& share);
+  void Finish(Share& share);
+  void Fail(const std::string& error);
+  double ProgressPerLayer() const;
+
+  vtkErrorDiffusionSampler* Self;
+  vtkInternals& Run;
+  vtkImageData* Input;
+  vtkDataArray* Array;
+  bool Diffusion;
+  std::vector<Share> Shares;
+  int Chunk = 2;           // layers a part scans between two looks at the others
+  double ProgressBase = 0; // where progress stood before the step
+  double Layers = 0;       // the step's layers to scan, overlaps included
+  std::atomic<bool> Stop{ false };
+
+  std::mutex Mutex; // guards the members below
+  size_t Started = 0; // shares started, the lowest ones
+  size_t Writer = 0;  // the lowest share whose points are not all in the output
+  size_t Left = 0;    // shares not done
+  vtkIdType Scanned = 0;
+  std::vector<Part*> Spares; // parts ended, whose buffers the next part started takes
+  std::string Error;
+};
+
+//------------------------------------------------------------------------------
+vtkErrorDiffusionSampler::vtkInternals::Schedule::Schedule(
+  vtkErrorDiffusionSampler* self, vtkImageData* input, vtkDataArray* array)
+  : Self(self)
+  , Run(*self->Internals)
+  , Input(input)
+  , Array(array)
+  , Diffusion(self->Method == METHOD_ERROR_DIFFUSION ||
+      self->Method == METHOD_RELAXED_ERROR_DIFFUSION)
+{
+  const Step& step = this->Run.Steps[this->Run.Current];
+  for (auto& part : this->Run.Parts)
   {
     const int first = std::max(step.First, part->ScanFirst);
     const int last = std::min(step.Last, part->Last);
     if (first <= last)
     {
-      shares.push_back({ part.get(), first, last, std::string() });
-      total += last - first + 1;
+      part->Direct = this->Shares.empty();
+      this->Shares.push_back({ part.get(), first, last });
+      this->Layers += last - first + 1;
     }
   }
-  const int round = static_cast<int>(
-    std::max<vtkIdType>(2, (vtkIdType(1) << 22) / std::max<vtkIdType>(1, run.LayerSize())));
-  const size_t threads = static_cast<size_t>(std::max(1, vtkBlueNoiseThreads::Available()));
-  const double base = run.ProgressDone;
-  const double width = step.Last - step.First + 1;
-  const bool diffusion =
-    this->Method == METHOD_ERROR_DIFFUSION || this->Method == METHOD_RELAXED_ERROR_DIFFUSION;
-  size_t writer = 0;
-  std::vector<Share*> tasks;
-  std::vector<vtkInternals::Part*> done;
-  for (;;)
+  this->Left = this->Shares.size();
+  this->Chunk = static_cast<int>(std::max<vtkIdType>(
+    2, (vtkIdType(1) << 20) / std::max<vtkIdType>(1, this->Run.LayerSize())));
+  this->ProgressBase = this->Run.ProgressDone;
+}
+
+//------------------------------------------------------------------------------
+bool vtkErrorDiffusionSampler::vtkInternals::Schedule::Scan(int threads)
+{
+  threads = std::max(1, std::min(threads, static_cast<int>(this->Shares.size())));
+  const auto epoch = std::chrono::milliseconds(500);
+  while (this->Left > 0 && !this->Stop)
   {
-    done.clear();
-    for (; writer < shares.size() && shares[writer].Done(); ++writer)
+    if (this->Left == 1 || threads == 1)
     {
-      done.push_back(shares[writer].Part);
+      this->ScanRest(*this->Take());
+      continue;
     }
-    tasks.clear();
-    for (size_t s = writer; s < shares.size() && tasks.size() < threads; ++s)
-    {
-      if (!shares[s].Done())
-      {
-        tasks.push_back(&shares[s]);
-      }
-    }
-    // The buffers no part starting now takes go before the held layers grow
-    // the output.
-    run.ReleaseSpares(static_cast<size_t>(std::count_if(
-      tasks.begin(), tasks.end(), [](const Share* task) { return !task->Part->Started; })));
-    run.WriteHeld(done);
-    if (tasks.empty())
-    {
-      break;
-    }
-    for (Share* task : tasks)
-    {
-      if (!task->Part->Started)
-      {
-        run.StartPart(*task->Part, static_cast<std::uint64_t>(this->Seed));
-      }
-    }
-    vtkBlueNoiseThreads::ForEach(static_cast<int>(tasks.size()), [&](int i) {
-      Share& share = *tasks[static_cast<size_t>(i)];
-      vtkInternals::Part& part = *share.Part;
-      part.Direct = &share == &shares[writer];
-      if (part.Direct)
-      {
-        part.WriteHeld();
-      }
-      // A part's first round takes its overlap too: the rounds of parts side by
-      // side then end together. A part alone (a slab of a streamed volume,
-      // the last part) scans the rest of the step at once, on a worker thread
-      // beside this one as a volume of one part does.
-      const bool alone = tasks.size() == 1;
-      const int to = alone ? share.Last
-                           : std::min(share.Last, std::max(share.Next, part.First) + round - 1);
-      part.Runner.SetThreaded(alone && this->WorkerThreadFor(to - share.Next + 1));
-      vtkInternals::SlabScan stages(this, part, input, array, share.Next, to, false);
-      if (!part.Runner.Run(
-            part.Kernel, stages, run.NX(), run.NY(), to - share.Next + 1, to < part.Last))
-      {
-        share.Error = part.Runner.GetError().empty() ? "a part stopped" : part.Runner.GetError();
-      }
-      share.Next = to + 1;
-      part.Ended = share.Next > part.Last;
-      if (share.Done())
-      {
-        part.Backlog.EmitAll(); // before the next step's input replaces this one
-      }
-    });
-    double done = 0.0;
-    for (Share& share : shares)
-    {
-      if (!share.Error.empty())
-      {
-        vtkErrorMacro("Sampling failed: " << share.Error);
-        return false;
-      }
-      if (share.Part->Ended)
-      {
-        share.Part->DropAheadPoints(diffusion);
-        share.Part->Ended = false;
-        run.Spares.push_back(share.Part);
-      }
-      done += share.Next - std::max(step.First, share.Part->ScanFirst);
-    }
-    run.ProgressDone = base + width * done / total;
-    this->UpdateProgress(run.ProgressDone / run.ProgressTotal);
-    if (this->IsAborted())
-    {
-      return false;
-    }
+    const Clock::time_point end = Clock::now() + epoch;
+    vtkBlueNoiseThreads::ForEach(threads, [&](int) { this->Work(end); });
+    this->Run.ProgressDone = this->ProgressBase + this->ProgressPerLayer() * this->Scanned;
+    this->Self->UpdateProgress(this->Run.ProgressDone / this->Run.ProgressTotal);
+    this->Stop = this->Stop || this->Self->IsAborted();
   }
-  run.ProgressDone = base + width;
+  for (Part* spare : this->Spares)
+  {
+    spare->Release();
+  }
+  if (!this->Error.empty())
+  {
+    vtkErrorWithObjectMacro(this->Self, "Sampling failed: " << this->Error);
+  }
+  const Step& step = this->Run.Steps[this->Run.Current];
+  this->Run.ProgressDone = this->ProgressBase + (step.Last - step.First + 1);
+  return !this->Stop;
+}
+
+//------------------------------------------------------------------------------
+// The progress a scanned layer stands for: the step's layers over those its
+// parts scan, overlaps included.
+double vtkErrorDiffusionSampler::vtkInternals::Schedule::ProgressPerLayer() const
+{
+  const Step& step = this->Run.Steps[this->Run.Current];
+  return (step.Last - step.First + 1) / this->Layers;
+}
+
+//------------------------------------------------------------------------------
+// One thread's share of an epoch: parts, a chunk at a time, until none is
+// left to take or the epoch's time is up (the part at hand is then left to
+// whichever thread takes it in the next epoch).
+void vtkErrorDiffusionSampler::vtkInternals::Schedule::Work(Clock::time_point end)
+{
+  while (!this->Stop && Clock::now() < end)
+  {
+    Share* share = this->Take();
+    if (!share)
+    {
+      return;
+    }
+    while (share->Next <= share->Last && Clock::now() < end)
+    {
+      if (!this->ScanChunk(*share))
+      {
+        return;
+      }
+    }
+    if (share->Next <= share->Last)
+    {
+      std::lock_guard<std::mutex> lock(this->Mutex);
+      share->Busy = false;
+      return;
+    }
+    this->Finish(*share);
+  }
+}
+
+//------------------------------------------------------------------------------
+// The lowest share no thread holds and not done, started if it was not, with
+// the buffers of a part that ended; null if none.
+vtkErrorDiffusionSampler::vtkInternals::Schedule::Share*
+vtkErrorDiffusionSampler::vtkInternals::Schedule::Take()
+{
+  Share* share = nullptr;
+  Part* spare = nullptr;
+  {
+    std::lock_guard<std::mutex> lock(this->Mutex);
+    for (size_t s = this->Writer; s < this->Started && !share; ++s)
+    {
+      share = this->Shares[s].Busy || this->Shares[s].Done ? nullptr : &this->Shares[s];
+    }
+    if (!share && this->Started < this->Shares.size())
+    {
+      share = &this->Shares[this->Started++];
+      if (!share->Target->Started && !this->Spares.empty())
+      {
+        spare = this->Spares.back();
+        this->Spares.pop_back();
+      }
+    }
+    if (!share)
+    {
+      return nullptr;
+    }
+    share->Busy = true;
+  }
+  if (!share->Target->Started)
+  {
+    share->Target->Start(this->Run.Begun, static_cast<std::uint64_t>(this->Self->Seed), spare);
+  }
+  else if (spare)
+  {
+    spare->Release();
+  }
+  return share;
+}
+
+//------------------------------------------------------------------------------
+// A chunk of a share's layers, the writer's held layers written first.
+bool vtkErrorDiffusionSampler::vtkInternals::Schedule::ScanChunk(Share& share)
+{
+  bool writer;
+  {
+    std::lock_guard<std::mutex> lock(this->Mutex);
+    writer = &this->Shares[this->Writer] == &share;
+  }
+  Part& part = *share.Target;
+  if (writer && !part.Direct)
+  {
+    part.WriteHeld();
+    part.Direct = true;
+  }
+  const int to = std::min(share.Last, share.Next + this->Chunk - 1);
+  const int layers = to - share.Next + 1;
+  part.Runner.SetThreaded(false);
+  SlabScan stages(this->Self, part, this->Input, this->Array, share.Next, to, 0.0);
+  if (!part.Runner.Run(part.Kernel, stages, this->Run.NX(), this->Run.NY(), layers, to < part.Last))
+  {
+    this->Fail(part.Runner.GetError().empty() ? "a part stopped" : part.Runner.GetError());
+    return false;
+  }
+  share.Next = to + 1;
+  std::lock_guard<std::mutex> lock(this->Mutex);
+  this->Scanned += layers;
+  return !this->Stop;
+}
+
+//------------------------------------------------------------------------------
+// The rest of the writer's layers at once, on the calling thread.
+bool vtkErrorDiffusionSampler::vtkInternals::Schedule::ScanRest(Share& share)
+{
+  Part& part = *share.Target;
+  if (!part.Direct)
+  {
+    part.WriteHeld();
+    part.Direct = true;
+  }
+  const int layers = share.Last - share.Next + 1;
+  part.Runner.SetThreaded(this->Self->WorkerThreadFor(layers));
+  SlabScan stages(
+    this->Self, part, this->Input, this->Array, share.Next, share.Last, this->ProgressPerLayer());
+  if (!part.Runner.Run(
+        part.Kernel, stages, this->Run.NX(), this->Run.NY(), layers, share.Last < part.Last))
+  {
+    if (part.Runner.GetError().empty())
+    {
+      this->Stop = true; // aborted
+    }
+    else
+    {
+      this->Fail(part.Runner.GetError());
+    }
+    return false;
+  }
+  share.Next = share.Last + 1;
+  this->Scanned += layers;
+  this->Finish(share);
   return true;
 }
 
 //------------------------------------------------------------------------------
-// The layers that parts done with the step hold, in part order: written side
-// by side, a layer a task, at their places after the output's points (the
-// arrays whose values share memory or are not plain numbers on this thread
-// afterwards).
-void vtkErrorDiffusionSampler::vtkInternals::WriteHeld(const std::vector<Part*>& parts)
+// A share scanned. Its part, if it ended, drops the points it fired ahead of
+// their mass (see FinishOutput) and becomes a spare; spares go once no part
+// is left to start, before held layers grow the output. When the share was
+// the writer, this thread owns the output: it writes the held layers of the
+// shares done after it, up to the first one not done, which takes over at
+// its next chunk (or when it is done).
+void vtkErrorDiffusionSampler::vtkInternals::Schedule::Finish(Share& share)
 {
-  struct Placed
+  Part& part = *share.Target;
+  part.Backlog.EmitAll(); // before the next step's input replaces this one
+  const bool ended = share.Last == part.Last;
+  if (ended)
   {
-    vtkErrorDiffusionPointAssembler::LayerSamples Layer;
-    vtkIdType First;
-  };
-  std::vector<Placed> layers;
-  vtkIdType total = 0;
-  for (const Part* part : parts)
+    part.DropAheadPoints(this->Diffusion);
+  }
+  size_t s = static_cast<size_t>(&share - this->Shares.data());
+  std::vector<Part*> spares;
   {
-    for (size_t l = 0; l < part->Held.GetNumberOfLayers(); ++l)
+    std::lock_guard<std::mutex> lock(this->Mutex);
+    share.Done = true;
+    share.Busy = false;
+    --this->Left;
+    if (ended)
     {
-      layers.push_back({ part->Held.GetLayer(l), total });
-      total += layers.back().Layer.Count();
+      this->Spares.push_back(&part);
+    }
+    if (this->Started == this->Shares.size())
+    {
+      spares.swap(this->Spares);
+    }
+    if (this->Writer != s)
+    {
+      s = this->Shares.size(); // not the writer: nothing to write
     }
   }
-  if (total > 0)
+  for (Part* spare : spares)
   {
-    const vtkIdType base = this->Assembler.Grow(total);
-    vtkBlueNoiseThreads::ForEach(static_cast<int>(layers.size()), [&](int l) {
-      const Placed& placed = layers[static_cast<size_t>(l)];
-      this->Assembler.Write(placed.Layer, base + placed.First, false);
-    });
-    for (size_t l = 0; this->Assembler.HasOtherArrays() && l < layers.size(); ++l)
+    spare->Release(); // its buffers only: the writer may be writing its held layers
+  }
+  while (s < this->Shares.size())
+  {
+    Part& done = *this->Shares[s].Target;
+    if (!done.Direct)
     {
-      this->Assembler.WriteOthers(layers[l].Layer, base + layers[l].First);
+      done.WriteHeld();
+      done.Direct = true;
     }
+    std::lock_guard<std::mutex> lock(this->Mutex);
+    this->Writer = ++s;
+    s = s < this->Shares.size() && this->Shares[s].Done ? s : this->Shares.size();
   }
-  for (Part* part : parts)
+}
+
+//------------------------------------------------------------------------------
+void vtkErrorDiffusionSampler::vtkInternals::Schedule::Fail(const std::string& error)
+{
+  std::lock_guard<std::mutex> lock(this->Mutex);
+  if (this->Error.empty())
   {
-    part->Held.Release(); // its blocks to the parts still holding
+    this->Error = error;
   }
+  this->Stop = true;
+}
+
+//------------------------------------------------------------------------------
+// One sampling step in parts side by side (see Schedule), on as many threads
+// as the module may use.
+bool vtkErrorDiffusionSampler::ScanParts(vtkImageData* input, vtkDataArray* array)
+{
+  vtkInternals::Schedule schedule(this, input, array);
+  return schedule.Scan(vtkBlueNoiseThreads::Available());
 }
 
 //------------------------------------------------------------------------------

@@ -75,18 +75,18 @@
  *
  * Threads. A volume of two parts or more (PartLayers, PartVoxels) sampled
  * by error diffusion (relaxed or not) or white noise is cut into z-parts
- * that are sampled side by side, a round of layers at a time, the lowest
- * parts not done first, each on one thread: the lowest part not written yet
- * adds its points to the output as it scans, the others hold theirs
- * compacted until their turn. Each part but the first scans OverlapLayers
+ * that are sampled side by side, each thread taking the lowest part no
+ * thread has taken as soon as its own is done (no thread waits for
+ * another): the lowest part not written yet adds its points to the output
+ * as it scans, the others hold theirs compacted until their turn. Each part but the first scans OverlapLayers
  * layers before its own, as a piece does, and its relaxation sees the last
  * MaximumRadius of them below its first layer (vtkBlueNoiseRelaxation's
  * context) but moves nothing into them. The parts depend on the volume
  * only, so the output does not depend on the threads; the seams between
  * them cost little (TestErrorDiffusionSamplerParts measures them). A part's
- * buffers exist from its first round to its last, so memory grows with the
- * threads, not with the parts. A volume of one part, or a part alone in its
- * round (the slab of a streamed volume, the last part), is scanned on a
+ * buffers exist from its first layer to its last, so memory grows with the
+ * threads, not with the parts. A volume of one part, or the one part left
+ * to scan (the slab of a streamed volume, the last part), is scanned on a
  * worker thread while this thread relaxes and builds the points, the densities
  * mapped and the relaxed layers' points built by whichever of the two has time
  * (UseWorkerThread, when more than one thread is allowed). The pass over the

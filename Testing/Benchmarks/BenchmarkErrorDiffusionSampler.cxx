@@ -251,9 +251,8 @@ double OneThreadSeconds(vtkImageData* image, double g, int method, bool parts, i
 // part measured alone on one thread: each part's scanned layers (its overlap
 // included) sampled as a volume of their own in one part, which also relaxes
 // and emits the overlap (so the projection errs on the slow side). The
-// rounds are replayed as the filter runs them: each round the lowest N parts
-// not done scan up to `round` layers each, and the round lasts as long as its
-// longest share. Speed-up = the whole volume in one part on one thread / the
+// schedule is replayed as the filter runs it: N threads, each taking the
+// lowest part no thread has taken as soon as its own is done. Speed-up = the whole volume in one part on one thread / the
 // replayed wall time. Counters: parts, overlap (scanned layers / sampled
 // layers) and x_N for N = 2, 4, 8, 16. Threads are not used: the machine
 // measuring need not have N cores.
@@ -282,30 +281,16 @@ void BM_PartsProjection(benchmark::State& state)
       auto part = Cube<vtkUnsignedCharArray>(n, 1.0, layers[p]);
       perLayer[p] = OneThreadSeconds(part, g, method, false, 2) / layers[p];
     }
-    const int round = static_cast<int>(std::max<vtkIdType>(2, (vtkIdType(1) << 22) / (vtkIdType(n) * n)));
     for (const int threads : { 2, 4, 8, 16 })
     {
-      std::vector<int> left = layers;
-      double wall = 0.0;
-      for (int first = 0; first < parts;)
+      // When each thread is free: the next part goes to the first one free.
+      std::vector<double> freeAt(static_cast<size_t>(threads), 0.0);
+      for (int p = 0; p < parts; ++p)
       {
-        double longest = 0.0;
-        for (int p = first, active = 0; p < parts && active < threads; ++p)
-        {
-          if (left[p] > 0)
-          {
-            const int now = std::min(round, left[p]);
-            longest = std::max(longest, now * perLayer[p]);
-            left[p] -= now;
-            ++active;
-          }
-        }
-        wall += longest;
-        while (first < parts && left[first] == 0)
-        {
-          ++first;
-        }
+        auto first = std::min_element(freeAt.begin(), freeAt.end());
+        *first += layers[p] * perLayer[p];
       }
+      const double wall = *std::max_element(freeAt.begin(), freeAt.end());
       state.counters["x_" + std::to_string(threads)] = whole / wall;
     }
     state.counters["parts"] = parts;

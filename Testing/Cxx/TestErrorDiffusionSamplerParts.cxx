@@ -5,7 +5,7 @@
 // count stays exact (within max(2, 0.05 %)); the 16 layers around each seam
 // hold their expected count within 2 %; the mask matches the points and the
 // attributes their voxels (numeric and string arrays); both the paper's
-// method and the relaxed one; an abort between rounds leaves an empty output.
+// method and the relaxed one; an abort between chunks leaves an empty output.
 #include "SamplerTestUtilities.h"
 #include "vtkBlueNoiseSpectrum.h"
 #include "vtkCommand.h"

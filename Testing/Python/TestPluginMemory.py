@@ -11,7 +11,7 @@ delete: a volume sampled twice (millions of points), its spectrum computed, then
   of what it was before the filters were made.
 parts: a volume of 16 z-parts, few points: the sampler's peak memory is that of
   the parts a thread scans at a time, not of all 16 (each part's buffers exist
-  from its first round to its last).
+  from its first layer to its last).
 soak: Apply cycles over random settings (method, budget, mapping, seed, slabs,
   jitter, mask), with aborts in the middle of runs and bad settings among them
   (an empty scalar range, a missing parameter file, an array the input lacks).
