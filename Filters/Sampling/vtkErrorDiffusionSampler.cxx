@@ -1123,6 +1123,7 @@ private:
   void Finish(Share& share);
   void Fail(const std::string& error);
   double ProgressPerLayer() const;
+  bool LastLeft();
 
   vtkErrorDiffusionSampler* Self;
   vtkInternals& Run;
@@ -1214,8 +1215,8 @@ double vtkErrorDiffusionSampler::vtkInternals::Schedule::ProgressPerLayer() cons
 
 //------------------------------------------------------------------------------
 // One thread's share of an epoch: parts, a chunk at a time, until none is
-// left to take or the epoch's time is up (the part at hand is then left to
-// whichever thread takes it in the next epoch).
+// left to take, or the epoch's time is up, or the part at hand is the last
+// one left (it is then left to the next epoch, or to ScanRest).
 void vtkErrorDiffusionSampler::vtkInternals::Schedule::Work(Clock::time_point end)
 {
   while (!this->Stop && Clock::now() < end)
@@ -1225,7 +1226,7 @@ void vtkErrorDiffusionSampler::vtkInternals::Schedule::Work(Clock::time_point en
     {
       return;
     }
-    while (share->Next <= share->Last && Clock::now() < end)
+    while (share->Next <= share->Last && Clock::now() < end && !this->LastLeft())
     {
       if (!this->ScanChunk(*share))
       {
@@ -1240,6 +1241,13 @@ void vtkErrorDiffusionSampler::vtkInternals::Schedule::Work(Clock::time_point en
     }
     this->Finish(*share);
   }
+}
+
+//------------------------------------------------------------------------------
+bool vtkErrorDiffusionSampler::vtkInternals::Schedule::LastLeft()
+{
+  std::lock_guard<std::mutex> lock(this->Mutex);
+  return this->Left == 1;
 }
 
 //------------------------------------------------------------------------------
