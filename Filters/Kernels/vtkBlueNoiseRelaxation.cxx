@@ -591,6 +591,14 @@ inline unsigned vtkBlueNoiseRelaxation::BlockedFaces(int x, int y) const
 }
 
 //------------------------------------------------------------------------------
+// Whether voxel (x, y), in the volume, is of positive density in the layer
+// of `slot`.
+inline bool vtkBlueNoiseRelaxation::Supported(const Slot* slot, int x, int y) const
+{
+  return slot->Full || ((this->Row(slot->Support.data(), y)[x >> 6] >> (x & 63)) & 1);
+}
+
+//------------------------------------------------------------------------------
 // Whether voxel (x, y) of layer z + dz (z the layer relaxed, |dz| <= Reach)
 // is in the region of class `cls`: in the volume (in the run's layers), of
 // positive density, of a class alike.
@@ -601,7 +609,7 @@ inline bool vtkBlueNoiseRelaxation::InRegion(int x, int y, int dz, int cls) cons
   {
     return false;
   }
-  if (!slot->Full && !((this->Row(slot->Support.data(), y)[x >> 6] >> (x & 63)) & 1))
+  if (!this->Supported(slot, x, y))
   {
     return false;
   }
@@ -646,16 +654,13 @@ bool vtkBlueNoiseRelaxation::LineSupported(int x, int y, int face) const
   // The line's ends along its axis, from the sample (0 at the sample).
   const int low = sign > 0 ? -r : -r - 1;
   const int high = sign > 0 ? r + 1 : r;
-  const auto supported = [this](const Slot* slot, int vx, int vy) {
-    return slot->Full || ((this->Row(slot->Support.data(), vy)[vx >> 6] >> (vx & 63)) & 1);
-  };
   const Slot* center = this->Slots[Reach];
   if (axis == 2)
   {
     for (int dz = low; dz <= high; ++dz)
     {
       const Slot* slot = this->Slots[dz + Reach];
-      if (!slot || !supported(slot, x, y))
+      if (!slot || !this->Supported(slot, x, y))
       {
         return false;
       }
@@ -670,7 +675,7 @@ bool vtkBlueNoiseRelaxation::LineSupported(int x, int y, int face) const
     }
     for (int dy = low; dy <= high; ++dy)
     {
-      if (!supported(center, x, y + dy))
+      if (!this->Supported(center, x, y + dy))
       {
         return false;
       }

@@ -201,6 +201,7 @@ private:
   int Nearest(int fx, int fy, int fz, int enough) const;
   unsigned BlockedFaces(int x, int y) const;
   unsigned CrowdedFaces(int reach) const;
+  bool Supported(const Slot* slot, int x, int y) const;
   bool InRegion(int x, int y, int dz, int cls) const;
   bool LineInRegion(int x, int y, int face, int cls, bool alike) const;
   bool LineSupported(int x, int y, int face) const;

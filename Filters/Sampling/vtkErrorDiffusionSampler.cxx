@@ -1177,6 +1177,8 @@ vtkErrorDiffusionSampler::vtkInternals::Schedule::Schedule(
 bool vtkErrorDiffusionSampler::vtkInternals::Schedule::Scan(int threads)
 {
   threads = std::max(1, std::min(threads, static_cast<int>(this->Shares.size())));
+  // Long enough that a thread's wait for the others' chunks at its end is
+  // little beside it, short enough for a progress bar and an abort.
   const auto epoch = std::chrono::milliseconds(500);
   while (this->Left > 0 && !this->Stop)
   {
