@@ -76,9 +76,10 @@
  * Threads. A volume of two parts or more (PartLayers, PartVoxels) sampled
  * by error diffusion (relaxed or not) or white noise is cut into z-parts
  * that are sampled side by side, each thread taking the lowest part no
- * thread has taken as soon as its own is done (no thread waits for
- * another): the lowest part not written yet adds its points to the output
- * as it scans, the others hold theirs compacted until their turn. Each part but the first scans OverlapLayers
+ * thread holds as soon as its own is done; the threads meet only every
+ * half second or so, when this thread reports progress and honors abort.
+ * The lowest part not written yet adds its points to the output as it
+ * scans, the others hold theirs compacted until their turn. Each part but the first scans OverlapLayers
  * layers before its own, as a piece does, and its relaxation sees the last
  * MaximumRadius of them below its first layer (vtkBlueNoiseRelaxation's
  * context) but moves nothing into them. The parts depend on the volume
@@ -96,10 +97,10 @@
  * Time O(voxels); memory besides the input and the output a few layers (per
  * part side by side), and the compacted samples of the parts that wait for
  * their turn to write (12 bytes a point and 8 a row of voxels), freed when
- * the execution ends. Progress is reported per layer (for
- * METHOD_POISSON_DISK and METHOD_SAMPLE_ELIMINATION every so many voxels or
- * candidates the kernel visits); abort is honored between layers (there, at
- * the kernel's reports) and leaves an empty output.
+ * the execution ends. Progress is reported per layer (for parts side by
+ * side, where the threads meet; for METHOD_POISSON_DISK and
+ * METHOD_SAMPLE_ELIMINATION every so many voxels or candidates the kernel
+ * visits); abort is honored there too and leaves an empty output.
  *
  * A budget that yields no points (NumberOfPoints 0, or a DensityScale that
  * makes the expected count below one half) gives a warning saying so.

@@ -5,7 +5,8 @@
 // count stays exact (within max(2, 0.05 %)); the 16 layers around each seam
 // hold their expected count within 2 %; the mask matches the points and the
 // attributes their voxels (numeric and string arrays); both the paper's
-// method and the relaxed one; an abort between chunks leaves an empty output.
+// method and the relaxed one; progress goes from 0 to 1 and never back; an
+// abort between chunks leaves an empty output.
 #include "SamplerTestUtilities.h"
 #include "vtkBlueNoiseSpectrum.h"
 #include "vtkCommand.h"
@@ -56,6 +57,17 @@ void Spectrum(vtkPolyData* points, int n, double& anisotropy, double& low)
   }
   low = table->GetFieldData()->GetArray("LowFrequencyRatio")->GetTuple1(0);
 }
+
+class ProgressRecorder : public vtkCommand
+{
+public:
+  static ProgressRecorder* New() { return new ProgressRecorder; }
+  void Execute(vtkObject*, unsigned long, void* data) override
+  {
+    this->Values.push_back(*static_cast<double*>(data));
+  }
+  std::vector<double> Values;
+};
 
 class AbortObserver : public vtkCommand
 {
@@ -300,7 +312,33 @@ int main()
   Check(SamePoints(run(1, 1, PartLayers, white), run(4, 3, PartLayers, white)),
     "white noise in parts: the same points with 1 and 4 threads, in one go and in 3 slabs");
 
-  // An abort between rounds: an empty output, and the next update samples.
+  // Progress from 0 to 1 and never back, on one thread (the parts one after
+  // another) and on four (the parts side by side, then the last one alone),
+  // in one slab and in seven.
+  for (const int threads : { 1, 4 })
+  {
+    for (const int slabs : { 1, 7 })
+    {
+      auto sampler = inParts();
+      sampler->SetNumberOfSlabs(slabs);
+      vtkNew<ProgressRecorder> progress;
+      sampler->AddObserver(vtkCommand::ProgressEvent, progress);
+      WithThreads(threads, [&] { sampler->Update(); });
+      const auto& v = progress->Values;
+      bool increasing = !v.empty() && v.front() == 0.0 && v.back() == 1.0;
+      for (size_t i = 1; i < v.size(); ++i)
+      {
+        increasing = increasing && v[i] >= v[i - 1];
+      }
+      // One thread scans each part at once and reports layer by layer; parts
+      // side by side report between epochs (this volume takes one).
+      Check(increasing && (threads > 1 || v.size() >= 100),
+        "progress in parts goes from 0 to 1 and never back (" + Str(threads) + " threads, " +
+          Str(slabs) + " slabs, " + Str(v.size()) + " reports)");
+    }
+  }
+
+  // An abort between chunks: an empty output, and the next update samples.
   {
     auto sampler = inParts();
     vtkNew<AbortObserver> abort;
