@@ -291,10 +291,16 @@ public:
       this->Values = vtkSamplingDensity::ValueTable();
     }
 
-    // The held layers after the output's points, by the writer (the one
-    // thread that writes there).
-    void WriteHeld()
+    // This part's turn to write (one thread writes to the output at a
+    // time): its held layers after the output's points, and its next ones
+    // straight into the output.
+    void BecomeWriter()
     {
+      if (this->Direct)
+      {
+        return;
+      }
+      this->Direct = true;
       vtkErrorDiffusionPointAssembler& assembler = this->Run->Assembler;
       vtkIdType first = assembler.Grow(this->Held.GetNumberOfPoints());
       for (size_t l = 0; l < this->Held.GetNumberOfLayers(); ++l)
@@ -1302,10 +1308,9 @@ bool vtkErrorDiffusionSampler::vtkInternals::Schedule::ScanChunk(Share& share)
     writer = &this->Shares[this->Writer] == &share;
   }
   Part& part = *share.Target;
-  if (writer && !part.Direct)
+  if (writer)
   {
-    part.WriteHeld();
-    part.Direct = true;
+    part.BecomeWriter();
   }
   const int to = std::min(share.Last, share.Next + this->Chunk - 1);
   const int layers = to - share.Next + 1;
@@ -1327,11 +1332,7 @@ bool vtkErrorDiffusionSampler::vtkInternals::Schedule::ScanChunk(Share& share)
 bool vtkErrorDiffusionSampler::vtkInternals::Schedule::ScanRest(Share& share)
 {
   Part& part = *share.Target;
-  if (!part.Direct)
-  {
-    part.WriteHeld();
-    part.Direct = true;
-  }
+  part.BecomeWriter();
   const int layers = share.Last - share.Next + 1;
   part.Runner.SetThreaded(this->Self->WorkerThreadFor(layers));
   SlabScan stages(
@@ -1398,11 +1399,7 @@ void vtkErrorDiffusionSampler::vtkInternals::Schedule::Finish(Share& share)
   while (s < this->Shares.size())
   {
     Part& done = *this->Shares[s].Target;
-    if (!done.Direct)
-    {
-      done.WriteHeld();
-      done.Direct = true;
-    }
+    done.BecomeWriter();
     std::lock_guard<std::mutex> lock(this->Mutex);
     this->Writer = ++s;
     s = s < this->Shares.size() && this->Shares[s].Done ? s : this->Shares.size();
