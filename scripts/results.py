@@ -422,7 +422,9 @@ def section_pvpython(opts, scratch):
             '`BlueNoiseTightScan`, loaded with ctypes); x = loop / UpdatePipeline of each pair, for',
             '*again* the median and the lowest in brackets. MiB: how much the process\'s resident',
             'memory grew during the `UpdatePipeline` (a first execution faults its output in, a',
-            're-execution writes into the memory of an earlier output).', '']
+            're-execution writes into the memory of an earlier output); *fault s*: the time to',
+            'fault in that much fresh memory in the same process right after (a byte written per',
+            'page), the machine\'s share of a first execution.', '']
     out += [l for l in text.splitlines() if l.startswith('|')] + ['']
     return out
 

@@ -22,7 +22,8 @@ sampler reads: x = loop seconds / UpdatePipeline seconds of each pair;
 re-executions print the median and the lowest ratio; MiB = how much the
 process's resident memory grew during the UpdatePipeline (a first execution
 faults its output in; a re-execution writes into the memory of an earlier
-output). No thresholds: figures for Documentation/Results.md
+output); fault s = the time to fault in that much fresh memory in this
+process right after the first execution (the machine's share of it). No thresholds: figures for Documentation/Results.md
 (scripts/results.py).
 """
 import argparse
@@ -53,6 +54,19 @@ def cube(n, g255, floats):
 
 sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), '..', 'Python'))
 from bluenoise_testing import resident_bytes  # noqa: E402 (after the path)
+
+
+def fault_seconds(mib):
+    """Seconds to fault in `mib` MiB of fresh memory in this process (a byte
+    written per page), what a first execution pays for an output that size."""
+    if mib <= 0:
+        return 0.0
+    start = time.perf_counter()
+    memory = np.empty(int(mib * 2.0 ** 20), np.uint8)
+    memory[::4096] = 1
+    seconds = time.perf_counter() - start
+    del memory
+    return seconds
 
 
 def timed_update(sampler):
@@ -98,9 +112,9 @@ def main():
     args = parser.parse_args()
     LoadPlugin(args.plugin, remote=False, ns=globals())
     tight = TightScan(args.tight_scan)
-    print('| edge | g | input | method | first s | first x | first MiB '
+    print('| edge | g | input | method | first s | first x | first MiB | fault s '
           '| again s (median) | again x: median (lowest) | again MiB (median) |')
-    print('| ---: | ---: | --- | --- | ---: | ---: | ---: | ---: | ---: | ---: |')
+    print('| ---: | ---: | --- | --- | ---: | ---: | ---: | ---: | ---: | ---: | ---: |')
     for n in [int(s) for s in args.sizes.split(',')]:
         for g255 in (8, 127):
             for floats in (0, 1):
@@ -114,6 +128,7 @@ def main():
                     sampler.ParameterSet = table
                     sampler.NumberOfPoints = int(g255 / 255.0 * n ** 3)
                     first, first_mib = timed_update(sampler)
+                    fault = fault_seconds(first_mib)
                     first_plain = tight.seconds(values, n)
                     sampler.Seed = 100
                     sampler.UpdatePipeline()
@@ -125,9 +140,9 @@ def main():
                         again_mib.append(grown)
                         plains.append(tight.seconds(values, n))
                     ratios = [p / t for p, t in zip(plains, times)]
-                    print('| %d | %d/255 | %s | %s | %.3f | %.2f | %.0f | %.3f | %.2f (%.2f) | %.0f |' % (
+                    print('| %d | %d/255 | %s | %s | %.3f | %.2f | %.0f | %.3f | %.3f | %.2f (%.2f) | %.0f |' % (
                         n, g255, 'float' if floats else 'uint8', label, first, first_plain / first,
-                        first_mib, statistics.median(times), statistics.median(ratios),
+                        first_mib, fault, statistics.median(times), statistics.median(ratios),
                         min(ratios), statistics.median(again_mib)), flush=True)
                     servermanager.ProxyManager().UnRegisterProxies()
                     del sampler, producer, image, values
