@@ -373,19 +373,24 @@ def section_parts(opts, scratch):
         'one thread (so the overlap\'s extra scan is counted, with its relaxation and',
         'points) and the filter\'s schedule replayed, the next part going to the first',
         'thread free. No thread is started: the machine measuring need not have N',
-        'cores. Constant uint8 cubes, a budget of g x voxels.',
+        'cores. uint8 volumes: constant cubes of density g, a budget of g x voxels; and the',
+        'graded ball of `scripts/bench-streaming.sh` (255 at its centre, times 0.75 to 1 by',
+        'layer, to 0 at its surface), densities value / 255 x g, whose middle parts hold',
+        'most of the work. Part layers: *Part Layers* (default 64).',
         '']
     rows = []
-    for key, rs in sorted(runs.items(), key=lambda kv: (named_args(kv[0])[1]['L'],
-                                                         named_args(kv[0])[1]['g255'],
-                                                         -named_args(kv[0])[1]['method'])):
+    order = lambda kv: tuple(named_args(kv[0])[1].get(k, 0) for k in ('ball', 'L', 'g255', 'layers'))
+    for key, rs in sorted(runs.items(), key=lambda kv: order(kv) + (-named_args(kv[0])[1]['method'],)):
         _, a = named_args(key)
         b = rs[0]
-        rows.append(['default' if a['method'] == 2 else 'paper\'s', '%d^3' % a['L'], g_label(a['g255']),
-                     '%d' % b['parts'], '%.2f' % b['overlap'], '%.1f' % b['one_part_s']] +
+        rows.append(['default' if a['method'] == 2 else 'paper\'s',
+                     '%s %d^3' % ('graded ball' if a.get('ball') else 'cube', a['L']), g_label(a['g255']),
+                     '%d' % (a.get('layers') or 64), '%d' % b['parts'], '%.2f' % b['overlap'],
+                     '%.1f' % b['one_part_s']] +
                     ['%.2f' % b['x_%d' % n] for n in (2, 4, 8, 16)])
-    out += table(['method', 'cube', 'g', 'parts', 'layers scanned / layers', 'one part, one thread: s',
-                  'x_2', 'x_4', 'x_8', 'x_16'], rows, ['---'] * 3 + ['---:'] * 7)
+    out += table(['method', 'volume', 'g', 'part layers', 'parts', 'layers scanned / layers',
+                  'one part, one thread: s', 'x_2', 'x_4', 'x_8', 'x_16'], rows,
+                 ['---'] * 3 + ['---:'] * 8)
     return out
 
 

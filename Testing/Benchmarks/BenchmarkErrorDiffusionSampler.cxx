@@ -84,6 +84,33 @@ vtkSmartPointer<vtkImageData> Blocks(int n, int low, int high)
   return image;
 }
 
+// Layers first ... first + layers - 1 of an n^3 uint8 ball graded from 255
+// (times 0.75 to 1 by layer) at its centre to 0 at its surface, 0 outside:
+// the streaming benchmark's volume (scripts/bench-streaming.sh). Its z-parts
+// differ in work: the end parts are mostly empty, the middle ones full.
+vtkSmartPointer<vtkImageData> GradedBall(int n, int first = 0, int layers = 0)
+{
+  layers = layers > 0 ? layers : n;
+  auto image = Cube<vtkUnsignedCharArray>(n, 0, layers);
+  auto* v = vtkUnsignedCharArray::SafeDownCast(image->GetPointData()->GetScalars())->GetPointer(0);
+  const double c = (n - 1) / 2.0;
+  for (int z = first; z < first + layers; ++z)
+  {
+    const double dz = (z - c) / c;
+    const double scale = 255.0 * (0.75 + 0.25 * std::sin(z / 16.0));
+    for (int y = 0; y < n; ++y)
+    {
+      for (int x = 0; x < n; ++x)
+      {
+        const double dx = (x - c) / c, dy = (y - c) / c;
+        const double d = std::sqrt(static_cast<double>(static_cast<float>(dx * dx + dy * dy)) + dz * dz);
+        *v++ = static_cast<unsigned char>(static_cast<float>(scale * std::min(1.0, std::max(0.0, 1.0 - d))));
+      }
+    }
+  }
+  return image;
+}
+
 // The tight loop on the same n^3 cube, fastest of 3, in seconds; densities
 // value / 255 for 8-bit values, the value itself for floats (as the cases'
 // cubes hold them).
@@ -252,20 +279,31 @@ double OneThreadSeconds(vtkImageData* image, double g, int method, bool parts, i
 // included) sampled as a volume of their own in one part, which also relaxes
 // and emits the overlap (so the projection errs on the slow side). The
 // schedule is replayed as the filter runs it: N threads, each taking the
-// lowest part no thread has taken as soon as its own is done. Speed-up = the whole volume in one part on one thread / the
-// replayed wall time. Counters: parts, overlap (scanned layers / sampled
-// layers) and x_N for N = 2, 4, 8, 16. Threads are not used: the machine
-// measuring need not have N cores.
-// range(0): edge; range(1): g in 1/255; range(2): the Method.
+// lowest part no thread has taken as soon as its own is done. Speed-up = the
+// whole volume in one part on one thread / the replayed wall time. Counters:
+// parts, overlap (scanned layers / sampled layers) and x_N for N = 2, 4, 8,
+// 16. Threads are not used: the machine measuring need not have N cores.
+// range(0): edge; range(1): g in 1/255; range(2): the Method; range(3): 0 a
+// constant cube of density g, 1 the graded ball (GradedBall) of densities
+// value / 255 x g (g at the centre of its densest layers); range(4): the
+// PartLayers (0: the default).
 void BM_PartsProjection(benchmark::State& state)
 {
   const int n = static_cast<int>(state.range(0));
-  const double g = static_cast<double>(state.range(1)) / 255.0;
+  const bool ball = state.range(3) != 0;
+  const double g = static_cast<double>(state.range(1)) / 255.0 / (ball ? 255.0 : 1.0);
   const int method = static_cast<int>(state.range(2));
-  auto image = Cube<vtkUnsignedCharArray>(n, 1.0);
+  const auto volume = [n, ball](int first, int layers) {
+    return ball ? GradedBall(n, first, layers) : Cube<vtkUnsignedCharArray>(n, 1.0, layers);
+  };
+  auto image = volume(0, n);
   for (auto _ : state)
   {
     vtkNew<vtkErrorDiffusionSampler> plan;
+    if (state.range(4) > 0)
+    {
+      plan->SetPartLayers(static_cast<int>(state.range(4)));
+    }
     OneThreadSeconds(image, g, method, true, 0, plan);
     const double whole = OneThreadSeconds(image, g, method, false, 2);
     const int parts = plan->GetNumberOfParts();
@@ -278,7 +316,7 @@ void BM_PartsProjection(benchmark::State& state)
       plan->GetPartRange(p, range);
       layers[p] = range[2] - range[0] + 1;
       scanned += layers[p];
-      auto part = Cube<vtkUnsignedCharArray>(n, 1.0, layers[p]);
+      auto part = volume(range[0], layers[p]);
       perLayer[p] = OneThreadSeconds(part, g, method, false, 2) / layers[p];
     }
     for (const int threads : { 2, 4, 8, 16 })
@@ -400,9 +438,11 @@ BENCHMARK(BM_Steps)
   ->ComputeStatistics("min", Fastest)
   ->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_PartsProjection)
-  ->ArgNames({ "L", "g255", "method" })
-  ->ArgsProduct({ { 512 }, { 8, 127 }, { 2, 0 } })
-  ->ArgsProduct({ { 1024 }, { 8 }, { 2, 0 } })
+  ->ArgNames({ "L", "g255", "method", "ball", "layers" })
+  ->ArgsProduct({ { 512 }, { 8, 127 }, { 2, 0 }, { 0 }, { 0 } })
+  ->ArgsProduct({ { 1024 }, { 8 }, { 2, 0 }, { 0 }, { 0 } })
+  ->ArgsProduct({ { 512, 1024 }, { 32 }, { 2, 0 }, { 1 }, { 0 } })
+  ->Args({ 1024, 32, 2, 1, 32 })
   ->Iterations(1)
   ->Unit(benchmark::kSecond);
 BENCHMARK_MAIN();
