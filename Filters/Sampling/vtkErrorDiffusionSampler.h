@@ -389,7 +389,9 @@ public:
    * than two parts is sampled in one. The parts depend on the volume alone,
    * never on the threads, so the output does not either; but it does depend
    * on these two. Each part but the first scans OverlapLayers layers before
-   * its own first, as a piece does (see the class comment).
+   * its own first, as a piece does (see the class comment). Where the
+   * density sits in a few parts (a ball in an empty box), smaller parts keep
+   * more threads busy, each scanning its overlap again.
    */
   vtkSetClampMacro(PartLayers, int, 2, 65536);
   vtkGetMacro(PartLayers, int);
