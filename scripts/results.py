@@ -374,7 +374,7 @@ def section_parts(opts, scratch):
         'points) and the filter\'s schedule replayed, the next part going to the first',
         'thread free. No thread is started: the machine measuring need not have N',
         'cores. uint8 volumes: constant cubes of density g, a budget of g x voxels; and the',
-        'graded ball of `scripts/bench-streaming.sh` (255 at its centre, times 0.75 to 1 by',
+        'graded ball of `scripts/bench-streaming.sh` (255 at its center, times 0.75 to 1 by',
         'layer, to 0 at its surface), densities value / 255 x g, whose middle parts hold',
         'most of the work. Part layers: *Part Layers* (default 64).',
         '']

@@ -85,9 +85,10 @@ vtkSmartPointer<vtkImageData> Blocks(int n, int low, int high)
 }
 
 // Layers first ... first + layers - 1 of an n^3 uint8 ball graded from 255
-// (times 0.75 to 1 by layer) at its centre to 0 at its surface, 0 outside:
-// the streaming benchmark's volume (scripts/bench-streaming.sh). Its z-parts
-// differ in work: the end parts are mostly empty, the middle ones full.
+// (times 0.75 to 1 by layer) at its center to 0 at its surface, 0 outside:
+// the formula of the streaming benchmark's volume (scripts/bench-streaming.sh).
+// Its z-parts differ in work: the end parts are mostly empty, the middle ones
+// full.
 vtkSmartPointer<vtkImageData> GradedBall(int n, int first = 0, int layers = 0)
 {
   layers = layers > 0 ? layers : n;
@@ -103,8 +104,8 @@ vtkSmartPointer<vtkImageData> GradedBall(int n, int first = 0, int layers = 0)
       for (int x = 0; x < n; ++x)
       {
         const double dx = (x - c) / c, dy = (y - c) / c;
-        const double d = std::sqrt(static_cast<double>(static_cast<float>(dx * dx + dy * dy)) + dz * dz);
-        *v++ = static_cast<unsigned char>(static_cast<float>(scale * std::min(1.0, std::max(0.0, 1.0 - d))));
+        const double d = std::sqrt(dx * dx + dy * dy + dz * dz);
+        *v++ = static_cast<unsigned char>(scale * std::min(1.0, std::max(0.0, 1.0 - d)));
       }
     }
   }
@@ -285,7 +286,7 @@ double OneThreadSeconds(vtkImageData* image, double g, int method, bool parts, i
 // 16. Threads are not used: the machine measuring need not have N cores.
 // range(0): edge; range(1): g in 1/255; range(2): the Method; range(3): 0 a
 // constant cube of density g, 1 the graded ball (GradedBall) of densities
-// value / 255 x g (g at the centre of its densest layers); range(4): the
+// value / 255 x g (g at the center of its densest layers); range(4): the
 // PartLayers (0: the default).
 void BM_PartsProjection(benchmark::State& state)
 {
