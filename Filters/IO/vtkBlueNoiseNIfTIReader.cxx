@@ -30,6 +30,38 @@
 #include <sstream>
 #include <vector>
 
+namespace
+{
+// An image frame (origin, spacing, direction d, row-major) mapped by the
+// 4x4 matrix m: the origin transformed, and each axis j, m d_j spacing_j,
+// split into its length (the new spacing) and its direction.
+void MapFrame(vtkMatrix4x4* m, const double origin[3], const double spacing[3], const double d[9],
+  double mappedOrigin[3], double mappedSpacing[3], double mappedDirection[9])
+{
+  double point[4] = { origin[0], origin[1], origin[2], 1.0 }, world[4];
+  m->MultiplyPoint(point, world);
+  std::copy(world, world + 3, mappedOrigin);
+  for (int j = 0; j < 3; ++j)
+  {
+    double column[3] = { 0, 0, 0 };
+    for (int i = 0; i < 3; ++i)
+    {
+      for (int k = 0; k < 3; ++k)
+      {
+        column[i] += m->GetElement(i, k) * d[3 * k + j] * spacing[j];
+      }
+    }
+    const double length =
+      std::sqrt(column[0] * column[0] + column[1] * column[1] + column[2] * column[2]);
+    for (int i = 0; i < 3; ++i)
+    {
+      mappedDirection[3 * i + j] = length > 0.0 ? column[i] / length : (i == j ? 1.0 : 0.0);
+    }
+    mappedSpacing[j] = length > 0.0 ? length : spacing[j];
+  }
+}
+}
+
 vtkStandardNewMacro(vtkBlueNoiseNIfTIReader);
 
 using Check = vtkBlueNoiseVolumeFileCheck;
@@ -400,45 +432,86 @@ int vtkBlueNoiseNIfTIReader::RequestInformation(
   outInfo->Set(vtkStreamingDemandDrivenPipeline::WHOLE_EXTENT(), empty, 6);
   this->InformationOK = false;
   this->PendingFrame.clear();
+  int extent[6];
+  if (!this->ReadHeader(extent))
+  {
+    return 1;
+  }
+  const std::string frame = this->ComputeFrame();
+  if (!this->FrameIsFinite(frame))
+  {
+    return 1;
+  }
+  outInfo->Set(vtkStreamingDemandDrivenPipeline::WHOLE_EXTENT(), extent, 6);
+  outInfo->Set(vtkDataObject::ORIGIN(), this->Origin, 3);
+  outInfo->Set(vtkDataObject::SPACING(), this->Spacing, 3);
+  outInfo->Set(vtkDataObject::DIRECTION(), this->Direction, 9);
+  outInfo->Set(vtkAlgorithm::CAN_PRODUCE_SUB_EXTENT(), 1);
+  vtkInformation* scalars =
+    vtkDataObject::GetActiveFieldInformation(this->Reader->GetOutputInformation(0),
+      vtkDataObject::FIELD_ASSOCIATION_POINTS, vtkDataSetAttributes::SCALARS);
+  if (scalars)
+  {
+    vtkDataObject::SetPointDataActiveScalarInfo(outInfo,
+      scalars->Get(vtkDataObject::FIELD_ARRAY_TYPE()),
+      scalars->Has(vtkDataObject::FIELD_NUMBER_OF_COMPONENTS())
+        ? scalars->Get(vtkDataObject::FIELD_NUMBER_OF_COMPONENTS())
+        : 1);
+  }
+  this->PendingFrame = frame;
+  this->InformationOK = true;
+  return 1;
+}
+
+//------------------------------------------------------------------------------
+// The header checked against the file (CheckFile), then read by VTK's NIfTI
+// reader, which reads it itself: its extent must be the checked one before
+// it reads a byte of data.
+bool vtkBlueNoiseNIfTIReader::ReadHeader(int extent[6])
+{
   if (!this->FileName || !*this->FileName)
   {
     this->Fail("no FileName set");
-    return 1;
+    return false;
   }
-
   Check::Checked checked;
   std::string error;
   if (!CheckFile(this->FileName, checked, error))
   {
     this->Fail(error);
-    return 1;
+    return false;
   }
-
-  // VTK's reader reads the header itself: its extent must be the checked one
-  // before it reads a byte of data.
   this->Reader->SetFileName(this->FileName);
   ErrorCollector messages({ this->Reader, this->Reader->GetExecutive() });
   this->Reader->UpdateInformation();
   vtkInformation* readerInfo = this->Reader->GetOutputInformation(0);
-  int extent[6] = { 0, -1, 0, -1, 0, -1 };
+  int read[6] = { 0, -1, 0, -1, 0, -1 };
   if (readerInfo->Has(vtkStreamingDemandDrivenPipeline::WHOLE_EXTENT()))
   {
-    readerInfo->Get(vtkStreamingDemandDrivenPipeline::WHOLE_EXTENT(), extent);
+    readerInfo->Get(vtkStreamingDemandDrivenPipeline::WHOLE_EXTENT(), read);
   }
   if (!messages.Errors.empty())
   {
     this->Fail(messages.Errors.front());
-    return 1;
+    return false;
   }
-  if (!std::equal(extent, extent + 6, checked.WholeExtent))
+  if (!std::equal(read, read + 6, checked.WholeExtent))
   {
-    this->Fail("the NIfTI reader's extent (" + ExtentText(extent) + ") differs from the header's (" +
+    this->Fail("the NIfTI reader's extent (" + ExtentText(read) + ") differs from the header's (" +
       ExtentText(checked.WholeExtent) + ")");
-    return 1;
+    return false;
   }
+  std::copy(checked.WholeExtent, checked.WholeExtent + 6, extent);
+  return true;
+}
 
-  // The frame: voxel space as the NIfTI reader gives it, then the sform or
-  // qform matrix M applied (see the class documentation).
+//------------------------------------------------------------------------------
+// Origin, Spacing and Direction: voxel space as VTK's reader gives it, then
+// the sform or qform matrix M applied (see the class documentation). Returns
+// the frame's name ("voxel", "sform" or "qform").
+std::string vtkBlueNoiseNIfTIReader::ComputeFrame()
+{
+  vtkInformation* readerInfo = this->Reader->GetOutputInformation(0);
   double origin[3] = { 0, 0, 0 }, spacing[3] = { 1, 1, 1 };
   double d[9] = { 1, 0, 0, 0, 1, 0, 0, 0, 1 };
   if (readerInfo->Has(vtkDataObject::ORIGIN()))
@@ -453,6 +526,9 @@ int vtkBlueNoiseNIfTIReader::RequestInformation(
   {
     readerInfo->Get(vtkDataObject::DIRECTION(), d);
   }
+  std::copy(origin, origin + 3, this->Origin);
+  std::copy(spacing, spacing + 3, this->Spacing);
+  std::copy(d, d + 9, this->Direction);
   vtkNIFTIImageHeader* header = this->Reader->GetNIFTIHeader();
   vtkMatrix4x4* m = nullptr;
   std::string frame = "voxel";
@@ -467,64 +543,29 @@ int vtkBlueNoiseNIfTIReader::RequestInformation(
     m = this->Reader->GetQFormMatrix();
     frame = "qform";
   }
-  std::copy(origin, origin + 3, this->Origin);
-  std::copy(spacing, spacing + 3, this->Spacing);
-  std::copy(d, d + 9, this->Direction);
   if (m)
   {
-    double point[4] = { origin[0], origin[1], origin[2], 1.0 }, world[4];
-    m->MultiplyPoint(point, world);
-    std::copy(world, world + 3, this->Origin);
-    for (int j = 0; j < 3; ++j)
-    {
-      double column[3] = { 0, 0, 0 };
-      for (int i = 0; i < 3; ++i)
-      {
-        for (int k = 0; k < 3; ++k)
-        {
-          column[i] += m->GetElement(i, k) * d[3 * k + j] * spacing[j];
-        }
-      }
-      const double length =
-        std::sqrt(column[0] * column[0] + column[1] * column[1] + column[2] * column[2]);
-      for (int i = 0; i < 3; ++i)
-      {
-        this->Direction[3 * i + j] = length > 0.0 ? column[i] / length : (i == j ? 1.0 : 0.0);
-      }
-      this->Spacing[j] = length > 0.0 ? length : spacing[j];
-    }
+    MapFrame(m, origin, spacing, d, this->Origin, this->Spacing, this->Direction);
   }
-  // A matrix can hold NaN or infinity: the points would too.
+  return frame;
+}
+
+//------------------------------------------------------------------------------
+// A matrix can hold NaN or infinity: the points would too.
+bool vtkBlueNoiseNIfTIReader::FrameIsFinite(const std::string& frame)
+{
   double values[15];
   std::copy(this->Origin, this->Origin + 3, values);
   std::copy(this->Spacing, this->Spacing + 3, values + 3);
   std::copy(this->Direction, this->Direction + 9, values + 6);
-  if (!std::all_of(values, values + 15, [](double v) { return std::isfinite(v); }))
+  if (std::all_of(values, values + 15, [](double v) { return std::isfinite(v); }))
   {
-    this->Fail("the volume's origin, spacing or direction is not finite" +
-      (frame == "voxel" ? std::string()
-                        : " (from the " + frame + " matrix; voxel space ignores it)"));
-    return 1;
+    return true;
   }
-
-  outInfo->Set(vtkStreamingDemandDrivenPipeline::WHOLE_EXTENT(), checked.WholeExtent, 6);
-  outInfo->Set(vtkDataObject::ORIGIN(), this->Origin, 3);
-  outInfo->Set(vtkDataObject::SPACING(), this->Spacing, 3);
-  outInfo->Set(vtkDataObject::DIRECTION(), this->Direction, 9);
-  outInfo->Set(vtkAlgorithm::CAN_PRODUCE_SUB_EXTENT(), 1);
-  vtkInformation* scalars = vtkDataObject::GetActiveFieldInformation(
-    readerInfo, vtkDataObject::FIELD_ASSOCIATION_POINTS, vtkDataSetAttributes::SCALARS);
-  if (scalars)
-  {
-    vtkDataObject::SetPointDataActiveScalarInfo(outInfo,
-      scalars->Get(vtkDataObject::FIELD_ARRAY_TYPE()),
-      scalars->Has(vtkDataObject::FIELD_NUMBER_OF_COMPONENTS())
-        ? scalars->Get(vtkDataObject::FIELD_NUMBER_OF_COMPONENTS())
-        : 1);
-  }
-  this->PendingFrame = frame;
-  this->InformationOK = true;
-  return 1;
+  this->Fail("the volume's origin, spacing or direction is not finite" +
+    (frame == "voxel" ? std::string()
+                      : " (from the " + frame + " matrix; voxel space ignores it)"));
+  return false;
 }
 
 //------------------------------------------------------------------------------

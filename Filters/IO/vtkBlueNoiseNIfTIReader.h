@@ -111,6 +111,10 @@ private:
 
   // Reports `message` (prefixed with the file name) and marks the file unreadable.
   void Fail(const std::string& message);
+  // The steps of RequestInformation (see the .cxx); false after a Fail.
+  bool ReadHeader(int extent[6]);
+  std::string ComputeFrame();
+  bool FrameIsFinite(const std::string& frame);
 
   vtkNew<vtkNIFTIImageReader> Reader;
   // The result of RequestInformation: the file vouched for, and its world frame.
