@@ -912,78 +912,21 @@ bool vtkBlueNoiseSpectrum::CombinePieces(
 }
 
 //------------------------------------------------------------------------------
+// The analysis grid of each realization (rules 1-3 of the class comment),
+// checked against one another and against the limits.
 bool vtkBlueNoiseSpectrum::BuildGrids(std::vector<Realization>& realizations)
 {
-  // The analysis grid of each realization (rules 1-3 of the class comment).
   double bounds[6] = { VTK_DOUBLE_MAX, -VTK_DOUBLE_MAX, VTK_DOUBLE_MAX, -VTK_DOUBLE_MAX,
     VTK_DOUBLE_MAX, -VTK_DOUBLE_MAX };
   bool needBounds = false;
   std::ostringstream error;
   for (std::size_t i = 0; i < realizations.size() && error.tellp() == 0; ++i)
   {
-    Realization& r = realizations[i];
-    const Description& d = r.Whole;
-    if (d.NumberOfPoints == 0)
-    {
-      error << "Realization " << i << " ("
-            << (r.Data ? r.Data->GetClassName() : (d.IsImage ? "vtkImageData" : "vtkPointSet"))
-            << ") has no points: the spectrum is undefined for N = 0.";
-    }
-    else if (this->UseInputGrid && d.IsImage)
-    {
-      r.Kind = SignalKind::ImageArray;
-      int signal[6];
-      SignalExtent(d.ImageExtent, d.CellArray, signal);
-      const int dims[3] = { signal[1] - signal[0] + 1, signal[3] - signal[2] + 1,
-        signal[5] - signal[4] + 1 };
-      r.Grid.SetDimensions(dims);
-      std::ostringstream text;
-      text << "the input image's own grid: extent [" << signal[0] << ", " << signal[1] << ", "
-           << signal[2] << ", " << signal[3] << ", " << signal[4] << ", " << signal[5] << "]";
-      r.GridText = text.str();
-    }
-    else if (this->UseInputGrid && d.HasSamplingGrid)
-    {
-      r.Kind = SignalKind::Points;
-      r.Grid.SetFromSamplingGrid(d);
-      r.GridText = "the sampler's grid (SamplingGrid field data): " + r.Grid.Describe();
-    }
-    else
-    {
-      r.Kind = d.IsImage ? SignalKind::WeightedPoints : SignalKind::Points;
-      r.GridFromBounds = needBounds = true;
-      vtkBlueNoiseSpectrumGrid::UniteBounds(bounds, d.Bounds);
-    }
+    needBounds = this->ChooseGrid(realizations[i], i, bounds, error) || needBounds;
   }
   if (needBounds && error.tellp() == 0)
   {
-    const double* over = this->UseGridBounds ? this->GridBounds : bounds;
-    CheckBoundsGrid(over, error);
-    bool assumed = false; // a point set without the sampler's grid, UseInputGrid on
-    for (Realization& r : realizations)
-    {
-      if (r.GridFromBounds)
-      {
-        r.Grid.SetFromBounds(this->GridDimensions, over);
-        r.GridText = std::string("GridDimensions over the ") +
-          (this->UseGridBounds ? "GridBounds" : "points' bounds") + ": " + r.Grid.Describe();
-        assumed = assumed || (this->UseInputGrid && !r.Whole.IsImage);
-      }
-    }
-    // Points that carry no grid may lie anywhere: the spectrum of a grid the
-    // filter made up means something only if they were drawn on it. Once per
-    // execution, naming the grid.
-    if (assumed && error.tellp() == 0)
-    {
-      const Realization& r = *std::find_if(realizations.begin(), realizations.end(),
-        [](const Realization& x) { return x.GridFromBounds && !x.Whole.IsImage; });
-      vtkWarningMacro("The input points carry no sampling grid (the SamplingGridOrigin, "
-                      "SamplingGridSpacing and SamplingGridExtent field data of "
-                      "vtkErrorDiffusionSampler): the spectrum assumes "
-        << r.GridText
-        << ". It describes blue noise only for points drawn on that grid (the table's "
-           "SpectrumGrid field data names it).");
-    }
+    this->GridsOverBounds(realizations, bounds, error);
   }
   for (std::size_t i = 0; i < realizations.size() && error.tellp() == 0; ++i)
   {
@@ -1006,6 +949,83 @@ bool vtkBlueNoiseSpectrum::BuildGrids(std::vector<Realization>& realizations)
     return false;
   }
   return true;
+}
+
+//------------------------------------------------------------------------------
+// Realization i's grid when the input gives one: an image's own (rule 1) or
+// the sampler's (rule 2). Returns true when it is to span the bounds (rule
+// 3), whose union it widens `bounds` by.
+bool vtkBlueNoiseSpectrum::ChooseGrid(
+  Realization& r, std::size_t i, double bounds[6], std::ostringstream& error)
+{
+  const Description& d = r.Whole;
+  if (d.NumberOfPoints == 0)
+  {
+    error << "Realization " << i << " ("
+          << (r.Data ? r.Data->GetClassName() : (d.IsImage ? "vtkImageData" : "vtkPointSet"))
+          << ") has no points: the spectrum is undefined for N = 0.";
+    return false;
+  }
+  if (this->UseInputGrid && d.IsImage)
+  {
+    r.Kind = SignalKind::ImageArray;
+    int signal[6];
+    SignalExtent(d.ImageExtent, d.CellArray, signal);
+    const int dims[3] = { signal[1] - signal[0] + 1, signal[3] - signal[2] + 1,
+      signal[5] - signal[4] + 1 };
+    r.Grid.SetDimensions(dims);
+    std::ostringstream text;
+    text << "the input image's own grid: extent [" << signal[0] << ", " << signal[1] << ", "
+         << signal[2] << ", " << signal[3] << ", " << signal[4] << ", " << signal[5] << "]";
+    r.GridText = text.str();
+    return false;
+  }
+  if (this->UseInputGrid && d.HasSamplingGrid)
+  {
+    r.Kind = SignalKind::Points;
+    r.Grid.SetFromSamplingGrid(d);
+    r.GridText = "the sampler's grid (SamplingGrid field data): " + r.Grid.Describe();
+    return false;
+  }
+  r.Kind = d.IsImage ? SignalKind::WeightedPoints : SignalKind::Points;
+  r.GridFromBounds = true;
+  vtkBlueNoiseSpectrumGrid::UniteBounds(bounds, d.Bounds);
+  return true;
+}
+
+//------------------------------------------------------------------------------
+// GridDimensions over GridBounds, or over the points' `bounds`, for the
+// realizations that carry no grid of their own (rule 3).
+void vtkBlueNoiseSpectrum::GridsOverBounds(
+  std::vector<Realization>& realizations, const double bounds[6], std::ostringstream& error)
+{
+  const double* over = this->UseGridBounds ? this->GridBounds : bounds;
+  CheckBoundsGrid(over, error);
+  bool assumed = false; // a point set without the sampler's grid, UseInputGrid on
+  for (Realization& r : realizations)
+  {
+    if (r.GridFromBounds)
+    {
+      r.Grid.SetFromBounds(this->GridDimensions, over);
+      r.GridText = std::string("GridDimensions over the ") +
+        (this->UseGridBounds ? "GridBounds" : "points' bounds") + ": " + r.Grid.Describe();
+      assumed = assumed || (this->UseInputGrid && !r.Whole.IsImage);
+    }
+  }
+  // Points that carry no grid may lie anywhere: the spectrum of a grid the
+  // filter made up means something only if they were drawn on it. Once per
+  // execution, naming the grid.
+  if (assumed && error.tellp() == 0)
+  {
+    const Realization& r = *std::find_if(realizations.begin(), realizations.end(),
+      [](const Realization& x) { return x.GridFromBounds && !x.Whole.IsImage; });
+    vtkWarningMacro("The input points carry no sampling grid (the SamplingGridOrigin, "
+                    "SamplingGridSpacing and SamplingGridExtent field data of "
+                    "vtkErrorDiffusionSampler): the spectrum assumes "
+      << r.GridText
+      << ". It describes blue noise only for points drawn on that grid (the table's "
+         "SpectrumGrid field data names it).");
+  }
 }
 
 //------------------------------------------------------------------------------

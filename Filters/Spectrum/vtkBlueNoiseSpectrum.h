@@ -102,7 +102,9 @@
 #include "vtkFiltersBlueNoiseModule.h" // for export macro
 #include "vtkTableAlgorithm.h"
 
-#include <vector> // for the hooks of distributed subclasses
+#include <cstddef> // for std::size_t
+#include <iosfwd>  // for std::ostringstream
+#include <vector>  // for the hooks of distributed subclasses
 
 class vtkBlueNoiseSpectrumKernel;
 class vtkImageData;
@@ -260,6 +262,9 @@ private:
   bool DescribePiece(Realization& piece, int index);
   bool CombinePieces(std::vector<Realization>& pieces, std::vector<Realization>& realizations);
   bool BuildGrids(std::vector<Realization>& realizations);
+  bool ChooseGrid(Realization& r, std::size_t i, double bounds[6], std::ostringstream& error);
+  void GridsOverBounds(
+    std::vector<Realization>& realizations, const double bounds[6], std::ostringstream& error);
   int Accumulate(const std::vector<Realization>& realizations, vtkBlueNoiseSpectrumKernel& kernel);
   bool AddRealization(const Realization& realization, int index, vtkBlueNoiseSpectrumKernel& kernel,
     long long counters[2]);
