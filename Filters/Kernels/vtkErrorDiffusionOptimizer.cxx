@@ -7,6 +7,7 @@
 #include "vtkErrorDiffusionKernel.h"
 #include "vtkNelderMeadMinimizer.h"
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 #include <string>
@@ -137,6 +138,88 @@ bool CheckSettings(
   }
   return true;
 }
+
+double CoefficientSum(const Key& key)
+{
+  double sum = 0.0;
+  for (double a : key.Coefficients)
+  {
+    sum += std::abs(a);
+  }
+  return sum;
+}
+
+// The key of a point of the simplex (six coefficients, the modulation), at
+// `level`: a point may wander below zero, a coefficient may not.
+Key KeyOf(double level, const std::vector<double>& x)
+{
+  Key k;
+  k.Level = level;
+  for (int c = 0; c < 6; ++c)
+  {
+    k.Coefficients[c] = std::abs(x[c]);
+  }
+  k.Modulation = std::abs(x[6]);
+  return k;
+}
+
+// The objective with KeepSymmetry: L relative to the start's. A point of
+// more S or more anisotropy than the start's ranks behind the start (so the
+// best point never has more), and the more so the more it has, which leads
+// the simplex back.
+double KeepingSymmetry(
+  const vtkErrorDiffusionOptimizer::Metrics& m, const vtkErrorDiffusionOptimizer::Metrics& from)
+{
+  const double low = from.LowFrequencyRatio > 0.0 ? from.LowFrequencyRatio : 1.0;
+  const double relative = m.LowFrequencyRatio / low;
+  const double symmetry = from.Symmetry > 0.0 ? m.Symmetry / from.Symmetry - 1.0 : m.Symmetry;
+  const double anisotropy = m.AnisotropyDB - from.AnisotropyDB;
+  if (symmetry <= 0.0 && anisotropy <= 0.0)
+  {
+    return relative;
+  }
+  return 1.0 + relative + 10.0 * std::max(symmetry, 0.0) + std::max(anisotropy, 0.0);
+}
+
+// The metrics of one key at one level, on a spectrum kernel kept from one
+// key to the next (its buffers and plan stay).
+class LevelMeasure
+{
+public:
+  LevelMeasure(double level, const vtkErrorDiffusionOptimizer::Settings& settings)
+    : Level(level)
+    , Settings(settings)
+  {
+    const int n = settings.GridSize;
+    this->Valid = this->Spectrum.SetDimensions(n, n, n);
+    this->Spectrum.SetWeight(settings.Weight);
+  }
+  bool Ready() const { return this->Valid; }
+  bool operator()(const Key& key, vtkErrorDiffusionOptimizer::Metrics& metrics)
+  {
+    const double total = CoefficientSum(key);
+    if (!(total > 0.0) || !std::isfinite(total) || !std::isfinite(key.Modulation))
+    {
+      return false;
+    }
+    this->Spectrum.Reset();
+    vtkBlueNoiseSpectrumKernel::Result r;
+    if (!Measure(vtkErrorDiffusionOptimizer::SingleKeyTable(key, this->Level), this->Level,
+          this->Settings, this->Spectrum, nullptr, nullptr) ||
+      !this->Spectrum.Compute(r))
+    {
+      return false;
+    }
+    metrics = ToMetrics(r, this->Settings.GridSize);
+    return true;
+  }
+
+private:
+  double Level;
+  const vtkErrorDiffusionOptimizer::Settings& Settings;
+  vtkBlueNoiseSpectrumKernel Spectrum;
+  bool Valid = false;
+};
 }
 
 //------------------------------------------------------------------------------
@@ -220,50 +303,17 @@ vtkErrorDiffusionOptimizer::LevelResult vtkErrorDiffusionOptimizer::OptimizeLeve
   result.Level = level;
   result.Start = start;
   result.Start.Level = level;
-  double sum = 0.0;
-  for (double a : start.Coefficients)
-  {
-    sum += std::abs(a);
-  }
-  const int n = settings.GridSize;
-  vtkBlueNoiseSpectrumKernel spectrum; // reused: its buffers and plan stay
-  if (!CheckSettings(settings, level, nullptr) || !(sum > 0.0) ||
-    !spectrum.SetDimensions(n, n, n))
+  const double sum = CoefficientSum(start);
+  if (!CheckSettings(settings, level, nullptr) || !(sum > 0.0))
   {
     return result;
   }
-  spectrum.SetWeight(settings.Weight);
-
-  auto toKey = [level](const std::vector<double>& x) {
-    Key k;
-    k.Level = level;
-    for (int c = 0; c < 6; ++c)
-    {
-      k.Coefficients[c] = std::abs(x[c]);
-    }
-    k.Modulation = std::abs(x[6]);
-    return k;
-  };
-  auto metricsOf = [&](const Key& key, Metrics& metrics) {
-    double total = 0.0;
-    for (double a : key.Coefficients)
-    {
-      total += a;
-    }
-    if (!(total > 0.0) || !std::isfinite(total) || !std::isfinite(key.Modulation))
-    {
-      return false;
-    }
-    spectrum.Reset();
-    vtkBlueNoiseSpectrumKernel::Result r;
-    if (!Measure(SingleKeyTable(key, level), level, settings, spectrum, nullptr, nullptr) ||
-      !spectrum.Compute(r))
-    {
-      return false;
-    }
-    metrics = ToMetrics(r, n);
-    return true;
-  };
+  LevelMeasure measure(level, settings);
+  if (!measure.Ready())
+  {
+    return result;
+  }
+  // The simplex's point: the six coefficients, then the modulation.
   std::vector<double> x0(7), steps(7);
   for (int c = 0; c < 6; ++c)
   {
@@ -272,34 +322,17 @@ vtkErrorDiffusionOptimizer::LevelResult vtkErrorDiffusionOptimizer::OptimizeLeve
   }
   x0[6] = std::abs(start.Modulation);
   steps[6] = 0.15;
-  result.Start = toKey(x0);
-  metricsOf(result.Start, result.StartMetrics);
+  result.Start = KeyOf(level, x0);
+  measure(result.Start, result.StartMetrics);
   const Metrics& from = result.StartMetrics;
-
   auto objective = [&](const std::vector<double>& x) {
     Metrics m;
-    if (!metricsOf(toKey(x), m))
+    if (!measure(KeyOf(level, x), m))
     {
       return std::numeric_limits<double>::infinity();
     }
-    if (!settings.KeepSymmetry)
-    {
-      return m.Target;
-    }
-    // L relative to the start's. A point of more S or more anisotropy than
-    // the start's ranks behind the start (so the best point never has
-    // more), and the more so the more it has, which leads the simplex back.
-    const double low = from.LowFrequencyRatio > 0.0 ? from.LowFrequencyRatio : 1.0;
-    const double relative = m.LowFrequencyRatio / low;
-    const double symmetry = from.Symmetry > 0.0 ? m.Symmetry / from.Symmetry - 1.0 : m.Symmetry;
-    const double anisotropy = m.AnisotropyDB - from.AnisotropyDB;
-    if (symmetry <= 0.0 && anisotropy <= 0.0)
-    {
-      return relative;
-    }
-    return 1.0 + relative + 10.0 * std::max(symmetry, 0.0) + std::max(anisotropy, 0.0);
+    return settings.KeepSymmetry ? KeepingSymmetry(m, from) : m.Target;
   };
-
   vtkNelderMeadMinimizer minimizer;
   minimizer.SetMaximumEvaluations(settings.MaximumEvaluations);
   minimizer.SetTolerance(settings.Tolerance);
@@ -309,16 +342,12 @@ vtkErrorDiffusionOptimizer::LevelResult vtkErrorDiffusionOptimizer::OptimizeLeve
   }
   const auto best = minimizer.Minimize(objective, x0, steps);
   result.Evaluations = best.Evaluations;
-  result.Optimized = toKey(best.Point);
-  double total = 0.0;
-  for (double a : result.Optimized.Coefficients)
-  {
-    total += a;
-  }
+  result.Optimized = KeyOf(level, best.Point);
+  const double total = CoefficientSum(result.Optimized);
   for (double& a : result.Optimized.Coefficients)
   {
     a /= total;
   }
-  metricsOf(result.Optimized, result.OptimizedMetrics);
+  measure(result.Optimized, result.OptimizedMetrics);
   return result;
 }
