@@ -734,6 +734,26 @@ inline bool Rare(float g)
   constexpr float limit = 0.05f;
   return g < limit || g > 1.0f - limit;
 }
+
+// The six targets of voxel idx of a layer (rows v apart, the next voxel of
+// the scan d away; next: the following layer, or nullptr) where some lie
+// outside the layer or the volume: whether each is active, and whether its
+// density is similar to g. The order is that of the weights.
+void TargetsAtFace(const float* density, const float* next, vtkIdType idx, vtkIdType d,
+  vtkIdType v, bool hasPrevU, bool hasNextU, bool hasPrevRow, bool hasNextRow, float g,
+  bool valid[6], bool alike[6])
+{
+  const bool nextLayer = next != nullptr;
+  const float targets[6] = { hasNextU ? density[idx + d] : 0.0f,
+    hasPrevU && hasNextRow ? density[idx - d + v] : 0.0f, hasNextRow ? density[idx + v] : 0.0f,
+    hasPrevRow && nextLayer ? next[idx - v] : 0.0f, hasPrevU && nextLayer ? next[idx - d] : 0.0f,
+    nextLayer ? next[idx] : 0.0f };
+  for (int t = 0; t < 6; ++t)
+  {
+    valid[t] = Active(targets[t]);
+    alike[t] = vtkBlueNoiseDensityClass::Similar(g, targets[t]);
+  }
+}
 }
 
 //------------------------------------------------------------------------------
@@ -825,7 +845,6 @@ template <bool Record>
 vtkIdType vtkErrorDiffusionScan::ScanLayer(
   const float* density, const float* next, unsigned char* mask, int layer)
 {
-  const bool nextLayerExists = next != nullptr;
   Reservoir reservoir;
   bool similar = true;
   const bool allActive = this->TestLayers(density, next, reservoir.Remaining, similar);
@@ -907,20 +926,9 @@ vtkIdType vtkErrorDiffusionScan::ScanLayer(
       state.Count += b;
       const float e = value - static_cast<float>(b);
       --reservoir.Remaining;
-      const bool hasPrevU = p > 0;
-      const bool hasNextU = p + 1 < s.NU;
-      const float targets[6] = { hasNextU ? density[idx + d] : 0.0f,
-        hasPrevU && hasNextRow ? density[idx - d + V] : 0.0f,
-        hasNextRow ? density[idx + V] : 0.0f,
-        hasPrevRow && nextLayerExists ? next[idx - V] : 0.0f,
-        hasPrevU && nextLayerExists ? next[idx - d] : 0.0f,
-        nextLayerExists ? next[idx] : 0.0f };
       bool valid[6], alike[6];
-      for (int t = 0; t < 6; ++t)
-      {
-        valid[t] = Active(targets[t]);
-        alike[t] = vtkBlueNoiseDensityClass::Similar(g, targets[t]);
-      }
+      TargetsAtFace(density, next, idx, d, V, p > 0, p + 1 < s.NU, hasPrevRow, hasNextRow, g,
+        valid, alike);
       state.Carry =
         this->SpreadAtFace(e, state.Level.Weights, valid, alike, eidx, ed, EV, &reservoir);
     }
