@@ -145,6 +145,27 @@ void vtkBlueNoiseRelaxation::FaceOrder(std::uint64_t seed, int x, int y, int z, 
 }
 
 //------------------------------------------------------------------------------
+void vtkBlueNoiseRelaxation::SetRule(int rule)
+{
+  const int chosen = rule == RULE_ENERGY ? RULE_ENERGY : RULE_SPACING;
+  if (chosen != this->Rule)
+  {
+    this->Rule = chosen;
+    for (Roots& roots : this->RootCache) // made by the other rule
+    {
+      roots.Density = -1.0f;
+    }
+    this->LastDensity = -1.0f;
+  }
+}
+
+//------------------------------------------------------------------------------
+int vtkBlueNoiseRelaxation::EnergyStart(std::uint64_t seed, int x, int y, int z)
+{
+  return static_cast<int>(Hash(seed ^ 0x5DEECE66DULL, x, y, z) % 27);
+}
+
+//------------------------------------------------------------------------------
 void vtkBlueNoiseRelaxation::Begin(
   int nx, int ny, int firstZ, std::uint64_t seed, int firstMovable)
 {
@@ -254,18 +275,27 @@ void vtkBlueNoiseRelaxation::SetDensity(float g)
   if (roots.Density != g)
   {
     roots.Density = g;
-    const double spacing = std::cbrt(1.0 / g);
-    roots.Limit = 0.75 * spacing * spacing;
-    // Clamped before the conversion to int: tiny densities have a huge spacing.
-    roots.Radius = static_cast<int>(
-      std::min(std::ceil(0.87 * spacing) + 1.0, static_cast<double>(MaximumRadius)));
-    // Only whether a sample is nearer than the limit matters, and nothing
-    // beyond the radius can be found.
-    roots.Cap = static_cast<int>(std::min(
-      std::ceil(roots.Limit), static_cast<double>((roots.Radius + 1) * (roots.Radius + 1))));
+    if (this->Rule == RULE_ENERGY)
+    {
+      // The box of the energy, and the window it reads: its rows to Radius + 1.
+      roots.Radius = EnergyWeights(g, roots.Weights);
+      roots.Cap = 0;
+    }
+    else
+    {
+      const double spacing = std::cbrt(1.0 / g);
+      roots.Limit = 0.75 * spacing * spacing;
+      // Clamped before the conversion to int: tiny densities have a huge spacing.
+      roots.Radius = static_cast<int>(
+        std::min(std::ceil(0.87 * spacing) + 1.0, static_cast<double>(MaximumRadius)));
+      // Only whether a sample is nearer than the limit matters, and nothing
+      // beyond the radius can be found.
+      roots.Cap = static_cast<int>(std::min(
+        std::ceil(roots.Limit), static_cast<double>((roots.Radius + 1) * (roots.Radius + 1))));
+    }
     // Each pair of radius and cap gets its rows once.
     RowSet& rows = this->RowSets[static_cast<size_t>(roots.Radius * RowSetCaps + roots.Cap)];
-    if (rows.Shells.empty())
+    if (rows.Loaded.empty())
     {
       rows = MakeRows(roots.Radius, roots.Cap);
     }
@@ -273,6 +303,23 @@ void vtkBlueNoiseRelaxation::SetDensity(float g)
   this->Limit = roots.Limit;
   this->Radius = roots.Radius;
   this->Cap = roots.Cap;
+  std::copy(std::begin(roots.Weights), std::end(roots.Weights), this->Weights);
+}
+
+//------------------------------------------------------------------------------
+int vtkBlueNoiseRelaxation::EnergyWeights(float g, float weights[2 * MaximumRadius + 3])
+{
+  const double sigma = EnergySigma * std::cbrt(1.0 / g);
+  // Clamped before the conversion to int: tiny densities have a huge spacing.
+  const int width = static_cast<int>(
+    std::max(1.0, std::min(std::ceil(EnergyBox * sigma), static_cast<double>(MaximumEnergyWidth))));
+  for (int d = -MaximumRadius - 1; d <= MaximumRadius + 1; ++d)
+  {
+    weights[d + MaximumRadius + 1] = std::abs(d) <= width
+      ? static_cast<float>(std::exp(-d * d / (2.0 * sigma * sigma)))
+      : 0.0f;
+  }
+  return width;
 }
 
 //------------------------------------------------------------------------------
@@ -281,6 +328,14 @@ void vtkBlueNoiseRelaxation::SetDensity(float g)
 vtkBlueNoiseRelaxation::RowSet vtkBlueNoiseRelaxation::MakeRows(int radius, int cap)
 {
   RowSet set;
+  if (cap == 0) // the energy rule's: every row within radius + 1, no shells
+  {
+    for (int dz = -radius - 1; dz <= radius + 1; ++dz)
+    {
+      set.Loaded.push_back({ dz, -radius - 1, radius + 1 });
+    }
+    return set;
+  }
   const auto searched = [&](int dz, int dy) {
     return std::abs(dz) <= radius && std::abs(dy) <= radius && dz * dz + dy * dy < cap;
   };
@@ -423,8 +478,9 @@ void vtkBlueNoiseRelaxation::Classify(Slot& slot, const float* density)
 
 //------------------------------------------------------------------------------
 // Whether the layer relaxed has samples of dissimilar densities within
-// reach of one another (Mixed); if so, per row and word the lowest and
-// highest class within Reach rows and layers (MixedLow, MixedHigh).
+// reach of one another (Mixed), or of densities of more than one region
+// (RegionMixed); if so, per row and word the lowest and highest class within
+// Reach rows and layers (MixedLow, MixedHigh).
 void vtkBlueNoiseRelaxation::FindMixed()
 {
   int low = 255, high = 0;
@@ -439,8 +495,9 @@ void vtkBlueNoiseRelaxation::FindMixed()
     full = full && (!slot || slot->Full);
   }
   this->Mixed = low <= high && !vtkBlueNoiseDensityClass::Alike(low, high);
-  this->Whole = full && !this->Mixed;
-  if (!this->Mixed)
+  this->RegionMixed = low <= high && !Within(low, high, RegionClasses);
+  this->Whole = full && !this->RegionMixed;
+  if (!this->Mixed && !this->RegionMixed)
   {
     return;
   }
@@ -483,14 +540,25 @@ void vtkBlueNoiseRelaxation::FindMixed()
 
 //------------------------------------------------------------------------------
 // Whether a sample of class `cls` at (x, y) of the layer relaxed may have
-// samples of a dissimilar density within reach.
-inline bool vtkBlueNoiseRelaxation::MixedAround(int x, int y, int cls) const
+// densities whose classes differ from its own by more than `classes` within
+// reach.
+inline bool vtkBlueNoiseRelaxation::MixedAround(int x, int y, int cls, int classes) const
 {
   const std::ptrdiff_t row = this->RowStart(y);
   const std::ptrdiff_t a = row + ((x - Reach) >> 6), b = row + ((x + Reach) >> 6);
   const int lo = std::min(this->MixedLow[a], this->MixedLow[b]);
   const int hi = std::max(this->MixedHigh[a], this->MixedHigh[b]);
-  return !vtkBlueNoiseDensityClass::Alike(lo, cls) || !vtkBlueNoiseDensityClass::Alike(hi, cls);
+  return !Within(lo, cls, classes) || !Within(hi, cls, classes);
+}
+
+//------------------------------------------------------------------------------
+// For a sample of class `cls` at (x, y): whether all positive densities
+// within reach are similar to its own (`counted`: KeepSimilar has nothing to
+// clear) and in its region (`region`: only the support ends a line).
+inline void vtkBlueNoiseRelaxation::Alikeness(int x, int y, int cls, bool& counted, bool& region) const
+{
+  counted = !this->Mixed || !this->MixedAround(x, y, cls, vtkBlueNoiseDensityClass::SimilarClasses);
+  region = !this->RegionMixed || !this->MixedAround(x, y, cls, RegionClasses);
 }
 
 //------------------------------------------------------------------------------
@@ -614,7 +682,7 @@ inline bool vtkBlueNoiseRelaxation::InRegion(int x, int y, int dz, int cls) cons
     return false;
   }
   const int c = slot->Classes.empty() ? slot->Low : slot->Classes[x + static_cast<size_t>(this->NX) * y];
-  return vtkBlueNoiseDensityClass::Alike(c, cls);
+  return Within(c, cls, RegionClasses);
 }
 
 //------------------------------------------------------------------------------
@@ -755,6 +823,30 @@ inline unsigned vtkBlueNoiseRelaxation::CrowdedFaces(int reach) const
 void vtkBlueNoiseRelaxation::RelaxSample(int x, int y, int z, float g)
 {
   this->SetDensity(g);
+  if (this->Rule == RULE_ENERGY)
+  {
+    this->MoveByEnergy(x, y, z, g);
+  }
+  else
+  {
+    this->MoveBySpacing(x, y, z, g);
+  }
+}
+
+//------------------------------------------------------------------------------
+// The sample at (x, y, z) moves by the voxel (dx, dy, dz), once for all.
+void vtkBlueNoiseRelaxation::Move(int x, int y, int z, int dx, int dy, int dz)
+{
+  const int X = x + dx, Y = y + dy, Z = z + dz;
+  this->Set(x, y, z, false);
+  this->Set(X, Y, Z, true);
+  this->FindPlane(Z)->Moved[X + static_cast<size_t>(this->NX) * Y] = 1;
+  ++this->Moves;
+}
+
+//------------------------------------------------------------------------------
+void vtkBlueNoiseRelaxation::MoveBySpacing(int x, int y, int z, float g)
+{
   const std::vector<RowRun>& loaded = this->CurrentRows().Loaded;
   this->Load(loaded, x, y);
   this->Window[Reach * Span + Reach] &= ~(std::uint64_t(1) << 32); // not its own neighbor
@@ -767,7 +859,8 @@ void vtkBlueNoiseRelaxation::RelaxSample(int x, int y, int z, float g)
   // Where densities are mixed, the samples of other densities leave the
   // window. None of them fills a voxel the sample may move to: that voxel's
   // density is within DensityTolerance of the sample's, so of a similar class.
-  const bool alike = !this->Mixed || !this->MixedAround(x, y, cls);
+  bool alike, region;
+  this->Alikeness(x, y, cls, alike, region);
   if (!alike)
   {
     this->KeepSimilar(loaded, x, y, cls);
@@ -797,7 +890,7 @@ void vtkBlueNoiseRelaxation::RelaxSample(int x, int y, int z, float g)
     const float* density = this->Densities[f[2] + 1];
     const float gc = density[X + static_cast<size_t>(this->NX) * Y];
     if (!Relaxable(gc) || std::abs(gc - g) > DensityTolerance * g ||
-      (!this->Whole && !this->LineInRegion(x, y, face, cls, alike)))
+      (!this->Whole && !this->LineInRegion(x, y, face, cls, region)))
     {
       continue;
     }
@@ -815,11 +908,148 @@ void vtkBlueNoiseRelaxation::RelaxSample(int x, int y, int z, float g)
   }
   if (target >= 0)
   {
-    const int X = x + Faces[target][0], Y = y + Faces[target][1], Z = z + Faces[target][2];
-    this->Set(x, y, z, false);
-    this->Set(X, Y, Z, true);
-    this->FindPlane(Z)->Moved[X + static_cast<size_t>(this->NX) * Y] = 1; // once is all
-    ++this->Moves;
+    this->Move(x, y, z, Faces[target][0], Faces[target][1], Faces[target][2]);
+  }
+}
+
+//------------------------------------------------------------------------------
+// The energy at the window's center and its 26 neighbors, at index (dz + 1)
+// 9 + (dy + 1) 3 + dx + 1 for the neighbor (dx, dy, dz): over the samples
+// in the window within Radius + 1 of the center along each axis, the sum of
+// w(dx') w(dy') w(dz') (Weights; (dx', dy', dz') a sample's offset from the
+// neighbor), in float, in the order the header gives.
+void vtkBlueNoiseRelaxation::Energies(float energy[27]) const
+{
+  const int reach = this->Radius + 1;
+  // w[d], |d| <= MaximumRadius + 1; even, so a row's sample at sx adds to the
+  // neighbors dx = -1, 0, 1 the four weights from w[-sx - 1] on (the fourth,
+  // of no neighbor, is carried along for four lanes at a time).
+  const float* w = this->Weights + MaximumRadius + 1;
+  const std::uint64_t keep = ((std::uint64_t(1) << (2 * reach + 1)) - 1) << (32 - reach);
+  float sums[3][3][4] = {}; // by dz + 1, dy + 1, dx + 1
+  for (int dz = -reach; dz <= reach; ++dz)
+  {
+    const std::uint64_t* rows = this->Window + (dz + Reach) * Span + Reach;
+    float layer[3][4] = {}; // over the layer's rows, by dy + 1, dx + 1
+    bool any = false;
+    for (int dy = -reach; dy <= reach; ++dy)
+    {
+      std::uint64_t bits = rows[dy] & keep;
+      if (!bits)
+      {
+        continue;
+      }
+      any = true;
+      float row[4] = {}; // over the row's samples
+      for (; bits; bits &= bits - 1)
+      {
+        const float* from = w - (__builtin_ctzll(bits) - 32) - 1;
+        for (int k = 0; k < 4; ++k)
+        {
+          row[k] += from[k];
+        }
+      }
+      for (int ey = 0; ey < 3; ++ey)
+      {
+        const float wy = w[dy - ey + 1];
+        for (int k = 0; k < 4; ++k)
+        {
+          layer[ey][k] += wy * row[k];
+        }
+      }
+    }
+    if (any)
+    {
+      for (int ez = 0; ez < 3; ++ez)
+      {
+        const float wz = w[dz - ez + 1];
+        for (int ey = 0; ey < 3; ++ey)
+        {
+          for (int k = 0; k < 4; ++k)
+          {
+            sums[ez][ey][k] += wz * layer[ey][k];
+          }
+        }
+      }
+    }
+  }
+  for (int k = 0; k < 27; ++k)
+  {
+    energy[k] = sums[k / 9][k / 3 % 3][k % 3];
+  }
+}
+
+//------------------------------------------------------------------------------
+// Whether face f of sample (x, y) of the layer relaxed is open to moves by the
+// faces' rule (the line of LineInRegion in the region).
+inline bool vtkBlueNoiseRelaxation::LineOpen(int x, int y, int face, int cls, bool alike) const
+{
+  return this->Whole ? !((this->BandFaces(x, y) >> face) & 1)
+                     : this->LineInRegion(x, y, face, cls, alike);
+}
+
+//------------------------------------------------------------------------------
+void vtkBlueNoiseRelaxation::MoveByEnergy(int x, int y, int z, float g)
+{
+  this->Load(this->CurrentRows().Loaded, x, y);
+  this->Window[Reach * Span + Reach] &= ~(std::uint64_t(1) << 32); // not its own neighbor
+  const int cls = vtkBlueNoiseDensityClass::Of(g);
+  bool alike, region;
+  this->Alikeness(x, y, cls, alike, region);
+  if (!alike)
+  {
+    this->KeepSimilar(this->CurrentRows().Loaded, x, y, cls);
+  }
+  float energy[27];
+  this->Energies(energy);
+  // A move must lower the energy by more than the sums' rounding.
+  float best = energy[13] * (1.0f - EnergyMargin);
+  int target = -1;
+  unsigned known = 0, open = 0; // the faces' rule, asked as needed
+  const int start = EnergyStart(this->Seed, x, y, z);
+  for (int n = 0; n < 27; ++n)
+  {
+    const int k = (start + n) % 27;
+    const int d[3] = { k % 3 - 1, k / 3 % 3 - 1, k / 9 - 1 };
+    if (k == 13 || !(energy[k] < best))
+    {
+      continue;
+    }
+    const int X = x + d[0], Y = y + d[1];
+    const float* density = this->Densities[d[2] + 1];
+    if (X < 0 || Y < 0 || X >= this->NX || Y >= this->NY || !density ||
+      ((this->Window[(d[2] + Reach) * Span + d[1] + Reach] >> (32 + d[0])) & 1))
+    {
+      continue; // outside the volume, in a final layer, or a sample
+    }
+    const float gc = density[X + static_cast<size_t>(this->NX) * Y];
+    if (!Relaxable(gc) || std::abs(gc - g) > DensityTolerance * g)
+    {
+      continue;
+    }
+    bool allowed = true;
+    for (int axis = 0; axis < 3 && allowed; ++axis)
+    {
+      if (d[axis] != 0)
+      {
+        const int face = 2 * axis + (d[axis] < 0 ? 1 : 0);
+        if (!((known >> face) & 1))
+        {
+          known |= 1u << face;
+          open |= static_cast<unsigned>(this->LineOpen(x, y, face, cls, region)) << face;
+        }
+        allowed = (open >> face) & 1;
+      }
+    }
+    if (allowed)
+    {
+      best = energy[k];
+      target = k;
+    }
+  }
+  if (target >= 0)
+  {
+    this->Move(x, y, z, target % 3 - 1, target / 3 % 3 - 1, target / 9 - 1);
   }
 }
 

@@ -8,7 +8,9 @@
  * Error diffusion places its points well on the whole but leaves pairs closer
  * than the blue-noise spacing now and then; that is most of what it has more
  * than a Poisson-disk set below the principal frequency. This pass moves each
- * such point by one voxel, to where it is farthest from its neighbors:
+ * such point by one voxel, to where it is farthest from its neighbors (the
+ * distance rule, the default; the energy rule, below, moves every point to
+ * where its neighbors repel it least):
  *
  * For every sample p of a layer whose density g(p) is in (0, 1/4] (above, the
  * moves lower L(g) still but raise S(g): at g = 0.35, 0.00036 to 0.00065 on
@@ -40,15 +42,43 @@
  * than that factor over a search.
  *
  * Faces: p's region is the voxels of the volume (of the run's layers) of
- * positive densities similar to g(p). A move to face neighbor c needs the
+ * positive densities whose classes are within RegionClasses of g(p)'s (a
+ * factor of about 1.09). A move to face neighbor c needs the
  * voxels along that face's axis within w of p and of c (2w + 2 of them) to
  * be in the region. Near a face of the region (of the volume, of the
  * support, or of a step to other densities) samples so move only along the
  * face: a search there reaches past it and finds nothing, and samples let
  * to move towards the face or away from it drift to it (on a cube at
  * 24/255, a skin 1.3 times as dense in the face layer and 0.7 times in the
- * next one, 0.8 dB of anisotropy). A run's first and last layers are faces;
- * with context layers below the first movable one, that one is not.
+ * next one, 0.8 dB of anisotropy). The region is narrower than the similar
+ * densities: where the density steps within their factor, the samples
+ * across (counted) push p away from the step, and a region reaching across
+ * it let samples drift away, emptying the layers along the step (with both
+ * rules; with the energy rule, anisotropy in a region of constant density
+ * inside a varying one). A run's first and last layers are faces; with
+ * context layers below the first movable one, that one is not.
+ *
+ * The energy rule (SetRule(RULE_ENERGY)) moves samples by what the whole
+ * neighborhood says, not the nearest sample alone: the same samples, order,
+ * once-only moves, similar densities and faces as above, but with sigma = EnergySigma s, W = ceil(EnergyBox sigma) (at least 1, at most
+ * MaximumEnergyWidth) and w the weights of EnergyWeights, every such sample
+ * p moves to the neighbor c of its 26 (face, edge and corner; empty, 0 <
+ * g(c) <= 1/4, |g(c) - g(p)| <= g(p) / 64, in the layers given, and, along
+ * each axis c differs from p in, open by the faces rule with w = W) of the
+ * lowest energy E(c), provided E(c) < (1 - EnergyMargin) E(p), the first in
+ * the order k = (EnergyStart + n) mod 27, n = 0 ... 26, among equals, where
+ * neighbor k is at (k mod 3 - 1, floor(k / 3) mod 3 - 1, floor(k / 9) - 1)
+ * from p (k = 13 is p). E(c) is the Gaussian energy of the other samples of
+ * a similar density around c, truncated to the box of half width W:
+ *   E(c) = sum over dz of w(dz - ez) (sum over dy of w(dy - ey) (sum over
+ *          dx of w(dx - ex))),
+ * (dx, dy, dz) the offsets from p of those samples, from -(W + 1) to W + 1
+ * each, (ex, ey, ez) = c - p, every sum in float in increasing order, the
+ * innermost starting from 0.0f. Moves to the 26 neighbors add no anisotropy
+ * here (the energy does not favor the axes as the distance rule's do), and
+ * two passes of it (one pass's output pushed into the next) take L(g) below
+ * weighted sample elimination's on constant cubes; a pass costs several
+ * times the distance rule's (Testing/QualityReport.md has the figures).
  *
  * On constant cubes it lowers L(g) below both the plain scan's and a
  * continuous Poisson-disk set's of the same count, lowers S(g) and leaves the
@@ -105,6 +135,14 @@ public:
   };
 
   static constexpr int MaximumRadius = 8;
+  /// The rules by which a sample moves (SetRule).
+  enum Rules
+  {
+    RULE_SPACING = 0, ///< away from its nearest neighbor, when too near (above)
+    RULE_ENERGY = 1   ///< to where its Gaussian energy is lowest (below)
+  };
+  /// The energy rule's widest box: half width MaximumRadius - 1.
+  static constexpr int MaximumEnergyWidth = MaximumRadius - 1;
   static constexpr float MaximumDensity = 0.25f;
   /// How far a move may change the density, relative to it.
   static constexpr float DensityTolerance = 1.0f / 64.0f;
@@ -141,6 +179,34 @@ public:
 
   /// After the last layer: relax what is left and return every other layer.
   const std::vector<Layer>& Flush();
+
+  /**
+   * The rule, before Begin: RULE_SPACING (the default) or RULE_ENERGY.
+   * Anything else is RULE_SPACING.
+   */
+  void SetRule(int rule);
+  int GetRule() const { return this->Rule; }
+
+  /**
+   * The energy rule's box half width W and weights for density g:
+   * weights[d + MaximumRadius + 1] = exp(-d^2 / (2 sigma^2)) for |d| <= W,
+   * 0 for W < |d| <= MaximumRadius + 1 (sigma = EnergySigma s).
+   */
+  static int EnergyWeights(float g, float weights[2 * MaximumRadius + 3]);
+  /// sigma over the mean spacing s = g^(-1/3); W = ceil(EnergyBox sigma).
+  static constexpr double EnergySigma = 0.3;
+  static constexpr double EnergyBox = 2.5;
+  /// A move lowers the energy to below (1 - EnergyMargin) times the sample's.
+  static constexpr float EnergyMargin = 1.0e-6f;
+
+  /**
+   * A sample's region for the faces rule: densities whose classes
+   * (vtkBlueNoiseDensityClass) differ from its own by at most this many.
+   */
+  static constexpr int RegionClasses = 2;
+
+  /// Where the energy rule's order of the neighbors of sample (x, y, z) starts: 0 ... 26.
+  static int EnergyStart(std::uint64_t seed, int x, int y, int z);
 
   /// Samples moved so far.
   vtkIdType GetNumberOfMoves() const { return this->Moves; }
@@ -195,7 +261,8 @@ private:
   static RowSet MakeRows(int radius, int cap);
   void Load(const std::vector<RowRun>& runs, int x, int y);
   void Classify(Slot& slot, const float* density);
-  bool MixedAround(int x, int y, int cls) const;
+  bool MixedAround(int x, int y, int cls, int classes) const;
+  void Alikeness(int x, int y, int cls, bool& counted, bool& region) const;
   void FindMixed();
   void KeepSimilar(const std::vector<RowRun>& runs, int x, int y, int cls);
   int Nearest(int fx, int fy, int fz, int enough) const;
@@ -210,6 +277,11 @@ private:
   void RelaxLayer(int z);
   void Prefetch(int x, int y, const Plane& plane);
   void RelaxSample(int x, int y, int z, float g);
+  void MoveBySpacing(int x, int y, int z, float g);
+  void MoveByEnergy(int x, int y, int z, float g);
+  void Energies(float energy[27]) const;
+  bool LineOpen(int x, int y, int face, int cls, bool alike) const;
+  void Move(int x, int y, int z, int dx, int dy, int dz);
   void Release(int z);
   void RelaxReady();
 
@@ -227,17 +299,22 @@ private:
   double Limit = 0.0;         // the squared distance below which a sample moves
   int Radius = 1;             // of the box searched around a voxel
   int Cap = 1;                // distances are counted up to this one (squared)
-  struct Roots // Limit, Radius and Cap of a density
+  int Rule = RULE_SPACING;
+  static bool Within(int a, int b, int classes) { return a - b <= classes && b - a <= classes; }
+  float Weights[2 * MaximumRadius + 3] = {}; // the energy rule's, of LastDensity
+  struct Roots // Limit, Radius and Cap of a density (and the energy rule's Weights)
   {
     float Density = -1.0f;
     double Limit = 0.0;
     int Radius = 1;
     int Cap = 1;
+    float Weights[2 * MaximumRadius + 3] = {};
   };
   static constexpr int RootCacheBits = 6;
   Roots RootCache[1 << RootCacheBits];
   // The row sets by radius and cap (at radius * RowSetCaps + cap), made as
-  // they come up (SetDensity).
+  // they come up (SetDensity); the energy rule's at cap 0 (the spacing
+  // rule's caps are at least 2).
   static constexpr int RowSetCaps = (MaximumRadius + 1) * (MaximumRadius + 1) + 1;
   std::vector<RowSet> RowSets = std::vector<RowSet>((MaximumRadius + 1) * RowSetCaps);
   const RowSet& CurrentRows() const
@@ -256,6 +333,7 @@ private:
   // per row and word, the lowest and highest class over the words within
   // Reach rows and layers (Mixed false: nowhere, and these are not made).
   bool Mixed = false;
+  bool RegionMixed = false; // the same by RegionClasses
   // The run's layers within Reach of the one relaxed are of positive
   // densities only, all alike: regions end only at the faces along x and y
   // and at the run's first and last layers.

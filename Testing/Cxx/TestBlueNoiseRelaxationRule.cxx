@@ -1,8 +1,8 @@
 // SPDX-FileCopyrightText: Copyright (c) 2025-2026 the BlueNoiseSampling contributors
 // SPDX-License-Identifier: BSD-3-Clause
-// vtkBlueNoiseRelaxation against its definition (the class comment), written
-// here the plain way: the whole volume in memory, the nearest sample by a loop
-// over the box around a voxel. Random masks over densities that vary by voxel
+// vtkBlueNoiseRelaxation against its definition (the class comment), both
+// rules, written here the plain way: the whole volume in memory, the nearest
+// sample and the energies by loops over the box around a voxel. Random masks over densities that vary by voxel
 // (within and beyond the move tolerance, above 1/4 and 0, whole layers
 // where nothing moves, and similar densities with holes of 0), at several volume shapes (rows shorter and longer
 // than a word), pushed layer by layer:
@@ -35,6 +35,18 @@ struct Volume
   }
 };
 
+// Whether densities a and b are similar (the searches count each other's
+// samples), and in one region (of the faces rule).
+bool Similar(float a, float b)
+{
+  return vtkBlueNoiseDensityClass::Similar(a, b);
+}
+bool InOneRegion(float a, float b)
+{
+  return std::abs(vtkBlueNoiseDensityClass::Of(a) - vtkBlueNoiseDensityClass::Of(b)) <=
+    R::RegionClasses;
+}
+
 bool Relaxable(float g)
 {
   return g > 0.0f && g <= R::MaximumDensity;
@@ -54,7 +66,7 @@ int Nearest(const Volume& v, int x, int y, int z, int radius, int cap, const int
         const int X = x + dx, Y = y + dy, Z = z + dz;
         if (v.Inside(X, Y, Z) && v.Mask[v.Index(X, Y, Z)] &&
           !(X == except[0] && Y == except[1] && Z == except[2]) &&
-          vtkBlueNoiseDensityClass::Similar(v.Density[v.Index(X, Y, Z)], g))
+          Similar(v.Density[v.Index(X, Y, Z)], g))
         {
           best = std::min(best, dx * dx + dy * dy + dz * dz);
         }
@@ -65,14 +77,14 @@ int Nearest(const Volume& v, int x, int y, int z, int radius, int cap, const int
 }
 
 // Whether the voxels from (x, y, z) + lo f to (x, y, z) + hi f are all in
-// the volume, of positive densities similar to g.
+// the volume, of positive densities in g's region.
 bool LineInRegion(const Volume& v, int x, int y, int z, const int f[3], int lo, int hi, float g)
 {
   for (int t = lo; t <= hi; ++t)
   {
     const int X = x + t * f[0], Y = y + t * f[1], Z = z + t * f[2];
     if (!v.Inside(X, Y, Z) || !(v.Density[v.Index(X, Y, Z)] > 0.0f) ||
-      !vtkBlueNoiseDensityClass::Similar(v.Density[v.Index(X, Y, Z)], g))
+      !InOneRegion(v.Density[v.Index(X, Y, Z)], g))
     {
       return false;
     }
@@ -133,8 +145,95 @@ void RelaxSample(Volume& v, std::vector<unsigned char>& moved, int x, int y, int
   }
 }
 
+// The energy rule's E(c) for the 27 neighbors c of sample p (index k as the
+// class comment numbers them), summed as it defines: per layer and row of
+// the box around p, each in increasing order, in float.
+void Energies(const Volume& v, const int p[3], float g, const float* w, int width, float energy[27])
+{
+  const int reach = width + 1;
+  std::fill(energy, energy + 27, 0.0f);
+  for (int dz = -reach; dz <= reach; ++dz)
+  {
+    float layer[9] = {};
+    for (int dy = -reach; dy <= reach; ++dy)
+    {
+      float row[3] = {};
+      for (int dx = -reach; dx <= reach; ++dx)
+      {
+        const int X = p[0] + dx, Y = p[1] + dy, Z = p[2] + dz;
+        if ((dx || dy || dz) && v.Inside(X, Y, Z) && v.Mask[v.Index(X, Y, Z)] &&
+          Similar(v.Density[v.Index(X, Y, Z)], g))
+        {
+          for (int ex = -1; ex <= 1; ++ex)
+          {
+            row[ex + 1] += w[dx - ex];
+          }
+        }
+      }
+      for (int ey = -1; ey <= 1; ++ey)
+      {
+        for (int ex = -1; ex <= 1; ++ex)
+        {
+          layer[3 * (ey + 1) + ex + 1] += w[dy - ey] * row[ex + 1];
+        }
+      }
+    }
+    for (int ez = -1; ez <= 1; ++ez)
+    {
+      for (int k = 0; k < 9; ++k)
+      {
+        energy[9 * (ez + 1) + k] += w[dz - ez] * layer[k];
+      }
+    }
+  }
+}
+
+// One sample's chance to move by the energy rule, as the class comment defines it.
+void EnergySample(Volume& v, std::vector<unsigned char>& moved, int x, int y, int z, std::uint64_t seed)
+{
+  const float g = v.Density[v.Index(x, y, z)];
+  float weights[2 * R::MaximumRadius + 3];
+  const int width = R::EnergyWeights(g, weights);
+  const float* w = weights + R::MaximumRadius + 1;
+  const int p[3] = { x, y, z };
+  float energy[27];
+  Energies(v, p, g, w, width, energy);
+  float best = energy[13] * (1.0f - R::EnergyMargin);
+  int target = -1;
+  const int start = R::EnergyStart(seed, x, y, z);
+  for (int n = 0; n < 27; ++n)
+  {
+    const int k = (start + n) % 27;
+    const int d[3] = { k % 3 - 1, k / 3 % 3 - 1, k / 9 - 1 };
+    const int X = x + d[0], Y = y + d[1], Z = z + d[2];
+    if (k == 13 || !(energy[k] < best) || !v.Inside(X, Y, Z) || v.Mask[v.Index(X, Y, Z)])
+    {
+      continue;
+    }
+    const float gc = v.Density[v.Index(X, Y, Z)];
+    bool open = Relaxable(gc) && std::abs(gc - g) <= R::DensityTolerance * g;
+    for (int axis = 0; axis < 3 && open; ++axis)
+    {
+      const int f[3] = { axis == 0 ? d[0] : 0, axis == 1 ? d[1] : 0, axis == 2 ? d[2] : 0 };
+      open = d[axis] == 0 || LineInRegion(v, x, y, z, f, -width, width + 1, g);
+    }
+    if (open)
+    {
+      best = energy[k];
+      target = k;
+    }
+  }
+  if (target >= 0)
+  {
+    const size_t to = v.Index(x + target % 3 - 1, y + target / 3 % 3 - 1, z + target / 9 - 1);
+    v.Mask[v.Index(x, y, z)] = 0;
+    v.Mask[to] = 1;
+    moved[to] = 1;
+  }
+}
+
 // The reference pass: layer by layer, each layer's samples in the hashed order.
-void Relax(Volume& v, std::uint64_t seed)
+void Relax(Volume& v, std::uint64_t seed, int rule)
 {
   std::vector<unsigned char> moved(v.Mask.size(), 0);
   for (int z = 0; z < v.N[2]; ++z)
@@ -158,7 +257,14 @@ void Relax(Volume& v, std::uint64_t seed)
       const int x = i % v.N[0], y = i / v.N[0];
       if (v.Mask[v.Index(x, y, z)] && !moved[v.Index(x, y, z)])
       {
-        RelaxSample(v, moved, x, y, z, seed);
+        if (rule == R::RULE_ENERGY)
+        {
+          EnergySample(v, moved, x, y, z, seed);
+        }
+        else
+        {
+          RelaxSample(v, moved, x, y, z, seed);
+        }
       }
     }
   }
@@ -214,9 +320,13 @@ int main()
   // Rows shorter and longer than a word, a column, more layers than the ring holds.
   const int shapes[][3] = { { 13, 11, 17 }, { 70, 9, 12 }, { 130, 6, 10 }, { 1, 1, 5 }, { 20, 8, 40 },
     { 24, 22, 30 } };
+  // One object for all runs, rules and shapes changing: Begin and SetRule
+  // must leave nothing of the run before.
+  R relaxation;
   for (const auto& shape : shapes)
   {
     for (std::uint64_t seed : { 1u, 77u, 5u, 9u, 13u, 21u })
+    for (int rule : { R::RULE_SPACING, R::RULE_ENERGY })
     {
       // Seed 5: bands of 4 layers that relax, then 4 of 0, then 4 of 0.3.
       // Seed 9: one density everywhere (the faces of the volume alone).
@@ -227,7 +337,7 @@ int main()
       const size_t layer = static_cast<size_t>(shape[0]) * shape[1];
       std::vector<unsigned char> relaxed(v.Mask.size(), 2);
       bool countsRight = true; // each layer's Count, its samples after the moves
-      R relaxation;
+      relaxation.SetRule(rule);
       relaxation.Begin(shape[0], shape[1], 0, seed);
       auto keep = [&](const std::vector<R::Layer>& layers) {
         for (const auto& l : layers)
@@ -241,9 +351,10 @@ int main()
         keep(relaxation.Push(z, &v.Density[z * layer], &v.Mask[z * layer]));
       }
       keep(relaxation.Flush());
-      Relax(v, seed);
+      Relax(v, seed, rule);
       const std::string what = Str(shape[0]) + "x" + Str(shape[1]) + "x" + Str(shape[2]) +
-        " seed " + Str(seed) + " (" + Str(relaxation.GetNumberOfMoves()) + " moves)";
+        " seed " + Str(seed) + (rule == R::RULE_ENERGY ? " energy" : " spacing") + " (" +
+        Str(relaxation.GetNumberOfMoves()) + " moves)";
       Check(relaxed == v.Mask, "the pass moves as its definition does: " + what);
       Check(std::count(relaxed.begin(), relaxed.end(), 1) == count, "the count is kept: " + what);
       Check(countsRight, "each layer comes with its count: " + what);
