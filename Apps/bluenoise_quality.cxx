@@ -7,16 +7,20 @@
 //   Optimized, Paper, Fixed   the paper's error diffusion with that parameter set;
 //   Relaxed (default)         the sampler's defaults (relaxed error
 //                             diffusion, Optimized parameters);
+//   Energy                    energy relaxed error diffusion (Optimized
+//                             parameters);
 //   WhiteNoise, PoissonDisk, SampleElimination
 //                             the sampler's other methods;
 //   ContinuousPoissonDisk     a 3D Poisson-disk set in continuous space
 //                             (Bridson's algorithm, like scipy's qmc.PoissonDisk)
 //                             of about the same count, binned to the voxels;
-//   RelaxedSubCube            the sampler's defaults on a varying volume: the
-//                             L^3 cube of density g inside a margin of L/4
-//                             voxels whose density ramps along z, measured on
-//                             the cube's voxels alone.
-// Then the local density of the default method and of the paper's: the
+//   RelaxedSubCube, EnergySubCube
+//                             the sampler's defaults and the energy relaxed
+//                             method on a varying volume: the L^3 cube of
+//                             density g inside a margin of L/4 voxels whose
+//                             density ramps along z, measured on the cube's
+//                             voxels alone.
+// Then the local density of the error-diffusion methods: the
 // points per 16-layer slab against their expectation on a ramp, a step, a
 // sphere and a real MRI volume. It prints Markdown tables.
 //
@@ -209,20 +213,19 @@ std::vector<unsigned char> SamplerMask(int size, double g, int method, int seed)
   return SamplerMask(DensityVolume(size, size, size, [g](int, int, int) { return g; }), method, seed);
 }
 
-// The default method on a varying volume: the L^3 cube of density g in the
+// `method` on a varying volume: the L^3 cube of density g in the
 // middle of a margin of L/4 voxels on every side, whose density ramps along z
 // as the local-density profile's ramp does (0.004 at the first layer, 0.304
 // at the last). The mask of the cube's voxels alone: what the sampler does
 // inside a region of constant density among others, boundaries included.
-std::vector<unsigned char> SubCubeMask(int size, double g, int seed)
+std::vector<unsigned char> SubCubeMask(int size, double g, int method, int seed)
 {
   const int margin = size / 4, n = size + 2 * margin;
   const auto inside = [=](int c) { return c >= margin && c < margin + size; };
   auto image = DensityVolume(n, n, n, [=](int x, int y, int z) {
     return inside(x) && inside(y) && inside(z) ? g : 0.004 + 0.3 * z / (n - 1.0);
   });
-  const std::vector<unsigned char> whole =
-    SamplerMask(image, vtkErrorDiffusionSampler::METHOD_RELAXED_ERROR_DIFFUSION, seed);
+  const std::vector<unsigned char> whole = SamplerMask(image, method, seed);
   std::vector<unsigned char> cube;
   cube.reserve(static_cast<size_t>(size) * size * size);
   for (int z = margin; z < margin + size; ++z)
@@ -236,7 +239,7 @@ std::vector<unsigned char> SubCubeMask(int size, double g, int seed)
 
 // The points of `method` per 16-layer slab of `image` (float densities,
 // sampled as they are) against the sum of its densities there: the table's
-// header and a row for the default method and the paper's, in % off.
+// header and a row for each error-diffusion method, in % off.
 void PrintProfile(const std::string& name, vtkImageData* image, int seed)
 {
   const int slab = 16;
@@ -256,8 +259,12 @@ void PrintProfile(const std::string& name, vtkImageData* image, int seed)
   for (double e : expected)
     std::cout << " " << static_cast<long>(std::lround(e)) << " |";
   std::cout << "\n";
-  for (int method : { vtkErrorDiffusionSampler::METHOD_RELAXED_ERROR_DIFFUSION,
-         vtkErrorDiffusionSampler::METHOD_ERROR_DIFFUSION })
+  const std::pair<const char*, int> methods[] = {
+    { "Relaxed", vtkErrorDiffusionSampler::METHOD_RELAXED_ERROR_DIFFUSION },
+    { "Energy", vtkErrorDiffusionSampler::METHOD_ENERGY_RELAXED_ERROR_DIFFUSION },
+    { "Paper", vtkErrorDiffusionSampler::METHOD_ERROR_DIFFUSION },
+  };
+  for (const auto& [label, method] : methods)
   {
     auto sampler = RunSampler(image, method, seed, false);
     std::vector<double> got(expected.size(), 0.0);
@@ -270,7 +277,7 @@ void PrintProfile(const std::string& name, vtkImageData* image, int seed)
       const double k = std::floor((points->GetPoint(i)[2] - origin[2]) / spacing[2] + 0.5);
       got[static_cast<size_t>(k) / slab] += 1.0;
     }
-    std::cout << "| " << (method == vtkErrorDiffusionSampler::METHOD_ERROR_DIFFUSION ? "Paper" : "Relaxed") << " |";
+    std::cout << "| " << label << " |";
     for (size_t k = 0; k < expected.size(); ++k)
     {
       std::ostringstream cell;
@@ -584,6 +591,7 @@ bool MeasureLevel(double level, const NamedTables& tables, const Options& o, Lev
   const double g = level / 255.0;
   const std::pair<const char*, int> methods[] = {
     { "Relaxed", vtkErrorDiffusionSampler::METHOD_RELAXED_ERROR_DIFFUSION },
+    { "Energy", vtkErrorDiffusionSampler::METHOD_ENERGY_RELAXED_ERROR_DIFFUSION },
     { "WhiteNoise", vtkErrorDiffusionSampler::METHOD_WHITE_NOISE },
     { "PoissonDisk", vtkErrorDiffusionSampler::METHOD_POISSON_DISK },
     { "SampleElimination", vtkErrorDiffusionSampler::METHOD_SAMPLE_ELIMINATION },
@@ -600,33 +608,45 @@ bool MeasureLevel(double level, const NamedTables& tables, const Options& o, Lev
     MeasureMask(PoissonDiskMask(o.Size, g * o.Size * o.Size * o.Size, o.FirstSeed + k), o,
       continuous);
   AddRow(byMethod, level, "ContinuousPoissonDisk", continuous);
-  Stats sub;
-  for (int k = 0; k < o.Seeds; ++k)
-    MeasureMask(SubCubeMask(o.Size, g, o.FirstSeed + k), o, sub);
-  AddRow(byMethod, level, "RelaxedSubCube", sub);
+  for (const auto& method : methods)
+  {
+    if (method.second == vtkErrorDiffusionSampler::METHOD_RELAXED_ERROR_DIFFUSION ||
+      method.second == vtkErrorDiffusionSampler::METHOD_ENERGY_RELAXED_ERROR_DIFFUSION)
+    {
+      Stats sub;
+      for (int k = 0; k < o.Seeds; ++k)
+        MeasureMask(SubCubeMask(o.Size, g, method.second, o.FirstSeed + k), o, sub);
+      AddRow(byMethod, level, std::string(method.first) + "SubCube", sub);
+    }
+  }
   return true;
 }
 
-// The default method inside a varying volume against on the constant cube:
+// The relaxed methods inside a varying volume against on the constant cube:
 // the change of each figure's mean, per level.
 void PrintSubCube(const Report& all)
 {
-  std::cout << "\nRelaxedSubCube against Relaxed (the same cube alone), change of the means:\n\n"
-               "| level | L(g) | S(g) | anisotropy dB |\n| ---: | ---: | ---: | ---: |\n";
+  std::cout << "\nRelaxedSubCube and EnergySubCube against Relaxed and Energy (the same cube "
+               "alone), change of the means:\n\n"
+               "| level | method | L(g) | S(g) | anisotropy dB |\n"
+               "| ---: | --- | ---: | ---: | ---: |\n";
   for (const auto& level : all)
   {
-    const Stats& sub = level.second.at("RelaxedSubCube");
-    const Stats& alone = level.second.at("Relaxed");
-    const auto change = [&](std::vector<double> Stats::*m, bool relative) {
-      const double a = Stats::Mean(alone.*m), b = Stats::Mean(sub.*m);
-      std::ostringstream cell;
-      cell.setf(std::ios::fixed);
-      cell.precision(relative ? 1 : 2);
-      cell << std::showpos << (relative ? 100.0 * (b / a - 1.0) : b - a) << (relative ? " %" : "");
-      return cell.str();
-    };
-    std::cout << "| " << level.first << " | " << change(&Stats::L, true) << " | "
-              << change(&Stats::S, true) << " | " << change(&Stats::A, false) << " |\n";
+    for (const std::string method : { "Relaxed", "Energy" })
+    {
+      const Stats& sub = level.second.at(method + "SubCube");
+      const Stats& alone = level.second.at(method);
+      const auto change = [&](std::vector<double> Stats::*m, bool relative) {
+        const double a = Stats::Mean(alone.*m), b = Stats::Mean(sub.*m);
+        std::ostringstream cell;
+        cell.setf(std::ios::fixed);
+        cell.precision(relative ? 1 : 2);
+        cell << std::showpos << (relative ? 100.0 * (b / a - 1.0) : b - a) << (relative ? " %" : "");
+        return cell.str();
+      };
+      std::cout << "| " << level.first << " | " << method << " | " << change(&Stats::L, true)
+                << " | " << change(&Stats::S, true) << " | " << change(&Stats::A, false) << " |\n";
+    }
   }
 }
 
@@ -637,6 +657,9 @@ void PrintSummary(const Report& all)
   PrintBelow(all, { "Relaxed", "ContinuousPoissonDisk" });
   PrintBelow(all, { "Relaxed", "ContinuousPoissonDisk", false, &Stats::L, "L(g)", true });
   PrintBelow(all, { "Relaxed", "PoissonDisk|SampleElimination", false, &Stats::L, "L(g)", true });
+  PrintBelow(all, { "Energy", "PoissonDisk|SampleElimination", false, &Stats::L, "L(g)", true });
+  PrintBelow(all, { "Energy", "ContinuousPoissonDisk", false, &Stats::L, "L(g)", true });
+  PrintBelow(all, { "Energy", "Relaxed", false, &Stats::L, "L(g)", true });
   PrintBelow(all, { "Paper", "ContinuousPoissonDisk" });
   PrintBelow(all, { "Relaxed", "WhiteNoise" });
   PrintBelow(all, { "Paper", "WhiteNoise" });

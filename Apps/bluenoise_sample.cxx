@@ -181,8 +181,7 @@ bool IsDiffusion(const std::string& method)
 {
   bluenoise::SamplerChoice choice;
   return bluenoise::FindChoice(bluenoise::SamplerMethods(), method, choice) &&
-    (choice.Value == vtkErrorDiffusionSampler::METHOD_ERROR_DIFFUSION ||
-      choice.Value == vtkErrorDiffusionSampler::METHOD_RELAXED_ERROR_DIFFUSION);
+    vtkErrorDiffusionSampler::IsErrorDiffusion(choice.Value);
 }
 
 // The parameter file of --parameters, read once here so that a bad one

@@ -254,7 +254,7 @@ def g_label(g255):
 
 def section_sampler(opts, scratch):
     if opts.quick:
-        filt = ('^BM_Kernel/L:256/|^BM_Relaxation/L:256/g255:8$|'
+        filt = ('^BM_Kernel/L:256/|^BM_Relaxation/L:256/g255:8/rule:0$|'
                 '^BM_Filter/L:256/g255:(8|127)/float:[01]/busy:0/thread:1/')
         reps = 1
     else:
@@ -268,7 +268,7 @@ def section_sampler(opts, scratch):
         if fam == 'BM_Kernel':
             kernel.append((a['L'], a['g255'], rs))
         elif fam == 'BM_Relaxation':
-            relax.append((a['L'], a['g255'], rs))
+            relax.append((a['rule'], a['L'], a['g255'], rs))
         elif fam == 'BM_Filter':
             filt_runs[(a['L'], a['g255'], a['float'], a['busy'], a['thread'], a['method'])] = rs
         elif fam == 'BM_Steps':
@@ -302,14 +302,15 @@ def section_sampler(opts, scratch):
         if busy:
             continue
         cells = ['float' if fl else 'uint8', '%d^3' % L, g_label(g)]
-        for method in (2, 0):
+        for method in (2, 5, 0):
             rs = filt_runs.get((L, g, fl, busy, thread, method), [])
             cells += [ms([seconds(b) for b in rs]), spread([b['x_tight'] for b in rs])]
         rows.append(cells)
     if rows:
         out += ['The filter (`vtkErrorDiffusionSampler`, worker thread allowed):', '']
-        out += table(['input', 'cube', 'g', 'default: ms', 'default: x_tight',
-                      'paper\'s: ms', 'paper\'s: x_tight'], rows, ['---'] * 3 + ['---:'] * 4)
+        out += table(['input', 'cube', 'g', 'default: ms', 'default: x_tight', 'energy: ms',
+                      'energy: x_tight', 'paper\'s: ms', 'paper\'s: x_tight'], rows,
+                     ['---'] * 3 + ['---:'] * 6)
     rows = []
     for key in sorted(k for k in filt_runs if k[3]):
         L, g, fl, busy, thread, method = key
@@ -324,16 +325,20 @@ def section_sampler(opts, scratch):
     rows = []
     for L, g, fl, busy, thread in sorted({k[:5] for k in filt_runs}):
         d = filt_runs.get((L, g, fl, busy, thread, 2))
+        e = filt_runs.get((L, g, fl, busy, thread, 5))
         p = filt_runs.get((L, g, fl, busy, thread, 0))
         if busy or not d or not p:
             continue
-        rows.append(['float' if fl else 'uint8', '%d^3' % L, g_label(g), '%.2f' % (
-            statistics.median(seconds(b) for b in d) / statistics.median(seconds(b) for b in p))])
+        paper = statistics.median(seconds(b) for b in p)
+        rows.append(['float' if fl else 'uint8', '%d^3' % L, g_label(g),
+                     '%.2f' % (statistics.median(seconds(b) for b in d) / paper),
+                     '%.2f' % (statistics.median(seconds(b) for b in e) / paper) if e else ''])
     if rows:
-        out += ['The default method\'s time / the paper\'s method\'s (medians; above 1/4 nothing',
-                'is relaxed and the two do the same work, so there the ratio is the spread of',
-                'the machine):', '']
-        out += table(['input', 'cube', 'g', 'default / paper\'s'], rows, ['---'] * 3 + ['---:'])
+        out += ['The relaxed methods\' time / the paper\'s method\'s (medians; above 1/4 nothing',
+                'is relaxed and they do the same work, so there the ratio is the spread of the',
+                'machine):', '']
+        out += table(['input', 'cube', 'g', 'default / paper\'s', 'energy / paper\'s'], rows,
+                     ['---'] * 3 + ['---:'] * 2)
     rows = [[name, ms([seconds(b) for b in steps[m]]), spread([b['x_tight'] for b in steps[m]])]
             for m, name in ((2, 'default'), (0, 'paper\'s')) if m in steps]
     if rows:
@@ -347,14 +352,17 @@ def section_sampler(opts, scratch):
                 'densities; x_tight against the tight loop on the same volume.' + ratio, '']
         out += table(['method', 'ms (median)', 'x_tight'], rows, ['---', '---:', '---:'])
     rows = []
-    for L, g, rs in sorted(relax):
-        rows.append(['%d^3' % L, g_label(g), ms([seconds(b) for b in rs]),
+    for rule, L, g, rs in sorted(relax):
+        rows.append(['energy' if rule else 'spacing (default)', '%d^3' % L, g_label(g),
+                     ms([seconds(b) for b in rs]),
                      spread([1.0 / b['x_kernel'] for b in rs if b.get('x_kernel')]),
                      '%d' % statistics.median(b['moves'] for b in rs)])
     if rows:
-        out += ['The relaxation pass alone (`BM_Relaxation`, on the kernel\'s samples of the cube;',
-                'it runs on the calling thread while the worker thread scans):', '']
-        out += table(['cube', 'g', 'ms (median)', 'relaxation / kernel time', 'moves'], rows)
+        out += ['One relaxation pass alone (`BM_Relaxation`, on the kernel\'s samples of the cube;',
+                'it runs on the calling thread while the worker thread scans; the energy relaxed method',
+                'runs two energy passes, one after the other):', '']
+        out += table(['rule', 'cube', 'g', 'ms (median)', 'relaxation / kernel time', 'moves'], rows,
+                     ['---'] * 3 + ['---:'] * 3)
     return out
 
 
@@ -573,11 +581,13 @@ def section_mpi(opts, scratch):
     return out
 
 
-QUALITY_ORDER = ['Relaxed', 'RelaxedSubCube', 'Paper', 'ContinuousPoissonDisk', 'PoissonDisk', 'SampleElimination',
+QUALITY_ORDER = ['Relaxed', 'RelaxedSubCube', 'Energy', 'EnergySubCube', 'Paper', 'ContinuousPoissonDisk', 'PoissonDisk', 'SampleElimination',
                  'WhiteNoise', 'Optimized', 'Fixed']
 QUALITY_NAMES = {
     'Relaxed': 'default (relaxed, Optimized)',
-    'RelaxedSubCube': 'default, the cube inside a varying volume', 'Paper': 'paper\'s error diffusion (Table 1)',
+    'RelaxedSubCube': 'default, the cube inside a varying volume',
+    'Energy': 'energy relaxed (Optimized)', 'EnergySubCube': 'energy relaxed, the cube inside a varying volume',
+    'Paper': 'paper\'s error diffusion (Table 1)',
     'ContinuousPoissonDisk': 'Poisson disk, continuous', 'PoissonDisk': 'Poisson disk on the voxels',
     'SampleElimination': 'sample elimination', 'WhiteNoise': 'white noise',
     'Optimized': 'error diffusion, Optimized', 'Fixed': 'error diffusion, Fixed'}
@@ -621,14 +631,14 @@ def section_quality(opts, scratch):
     rows = []
     for l in levels:
         best = min(values[(l, m)][0] for m in methods
-                   if m not in ('WhiteNoise', 'RelaxedSubCube') and (l, m) in values)
+                   if m not in ('WhiteNoise', 'RelaxedSubCube', 'EnergySubCube') and (l, m) in values)
         cells = ['%d/255' % l]
         for m in methods:
             v = values.get((l, m))
             cells.append(('**%.4f**' if v and v[0] == best else '%.4f') % v[0] if v else '')
         rows.append(cells)
     out += table(['g'] + [QUALITY_NAMES[m] for m in methods], rows)
-    out += ['(bold: the lowest but white noise\'s and the default\'s in a varying volume.)',
+    out += ['(bold: the lowest but white noise\'s and those in a varying volume.)',
             'The default\'s L(g) against each method, in % of that method\'s (negative: the',
             'default is lower); "=" where the two differ by less than the larger standard',
             'deviation:', '']

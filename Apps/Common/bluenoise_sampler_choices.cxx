@@ -42,6 +42,8 @@ std::vector<SamplerChoice> SamplerMethods()
     {
       { "relaxed-error-diffusion", Sampler::METHOD_RELAXED_ERROR_DIFFUSION,
         "relaxed error diffusion" },
+      { "energy-relaxed-error-diffusion", Sampler::METHOD_ENERGY_RELAXED_ERROR_DIFFUSION,
+        "energy relaxed error diffusion" },
       { "error-diffusion", Sampler::METHOD_ERROR_DIFFUSION, "error diffusion" },
       { "white-noise", Sampler::METHOD_WHITE_NOISE, "white noise" },
       { "poisson-disk", Sampler::METHOD_POISSON_DISK, "Poisson disk" },

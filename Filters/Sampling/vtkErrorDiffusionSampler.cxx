@@ -46,6 +46,28 @@ vtkCxxSetObjectMacro(vtkErrorDiffusionSampler, TransferFunction, vtkPiecewiseFun
 
 namespace
 {
+// Poisson disk and sample elimination take their piece at once, not by layers.
+bool IsWholeVolumeMethod(int method)
+{
+  return method == vtkErrorDiffusionSampler::METHOD_POISSON_DISK ||
+    method == vtkErrorDiffusionSampler::METHOD_SAMPLE_ELIMINATION;
+}
+
+// The relaxation passes after the scan, by their rules
+// (vtkBlueNoiseRelaxation::Rules): none for the other methods.
+std::vector<int> RelaxationRules(int method)
+{
+  switch (method)
+  {
+    case vtkErrorDiffusionSampler::METHOD_RELAXED_ERROR_DIFFUSION:
+      return { vtkBlueNoiseRelaxation::RULE_SPACING };
+    case vtkErrorDiffusionSampler::METHOD_ENERGY_RELAXED_ERROR_DIFFUSION:
+      return { vtkBlueNoiseRelaxation::RULE_ENERGY, vtkBlueNoiseRelaxation::RULE_ENERGY };
+    default:
+      return {};
+  }
+}
+
 // Below this a second thread costs more than it saves.
 constexpr vtkIdType MinimumVoxelsForWorkerThread = 32768;
 
@@ -172,7 +194,7 @@ public:
     int Last = -1;
     int ScanFirst = 0; // first layer scanned (overlap included)
     vtkErrorDiffusionKernel Kernel;
-    vtkBlueNoiseRelaxation Relaxation;
+    std::vector<vtkBlueNoiseRelaxation> Relaxations; // its passes, one after the other
     vtkErrorDiffusionLayerBacklog Backlog; // the relaxation's final layers, to Emit
     vtkErrorDiffusionLayerRunner Runner;   // its chunks, when parts run side by side
     vtkSamplingDensity::ValueTable Values; // its fills' own: parts fill side by side
@@ -217,9 +239,13 @@ public:
       {
         // An overlap layer: it settles the scan, and the last few are what the
         // relaxation of the part's first layers sees below them.
+        // Each pass returns it at once, as it came.
         if (this->Run->Relaxing && z >= this->RelaxFirst())
         {
-          this->Relaxation.Push(z, density, mask);
+          for (vtkBlueNoiseRelaxation& pass : this->Relaxations)
+          {
+            pass.Push(z, density, mask);
+          }
         }
         return;
       }
@@ -228,13 +254,45 @@ public:
         this->Emit(z, density, mask, count);
         return;
       }
-      this->Backlog.BeforePush();
-      this->Backlog.AfterPush(this->Relaxation.Push(z, density, mask));
+      this->Relax(0, z, density, mask);
       if (z == this->Last)
       {
-        this->Backlog.AfterPush(this->Relaxation.Flush());
+        this->FlushFrom(0);
         this->Backlog.EmitAll();
       }
+    }
+
+    // Layer z into relaxation pass `pass`; what it returns on to the next
+    // pass, or from the last one to the backlog. (A pass copies what it keeps
+    // of a layer in Push, or returns it as it came: the layers one pass
+    // returns need not outlive the next pass's Push.)
+    void Relax(size_t pass, int z, const float* density, const unsigned char* mask)
+    {
+      if (pass + 1 == this->Relaxations.size())
+      {
+        this->Backlog.BeforePush();
+        this->Backlog.AfterPush(this->Relaxations[pass].Push(z, density, mask));
+        return;
+      }
+      for (const auto& layer : this->Relaxations[pass].Push(z, density, mask))
+      {
+        this->Relax(pass + 1, layer.Z, layer.Density, layer.Mask);
+      }
+    }
+
+    // After the part's last layer: passes `pass` on flushed in turn.
+    void FlushFrom(size_t pass)
+    {
+      if (pass + 1 == this->Relaxations.size())
+      {
+        this->Backlog.AfterPush(this->Relaxations[pass].Flush());
+        return;
+      }
+      for (const auto& layer : this->Relaxations[pass].Flush())
+      {
+        this->Relax(pass + 1, layer.Z, layer.Density, layer.Mask);
+      }
+      this->FlushFrom(pass + 1);
     }
 
     // The first layer the relaxation sees: the overlap layers its search reaches.
@@ -263,9 +321,13 @@ public:
     void StartRelaxation(std::uint64_t seed)
     {
       vtkInternals& run = *this->Run;
-      if (run.Relaxing)
+      this->Relaxations.resize(run.RelaxationRules.size());
+      for (size_t pass = 0; pass < this->Relaxations.size(); ++pass)
       {
-        this->Relaxation.Begin(run.NX(), run.NY(), this->RelaxFirst(), seed, this->First);
+        // Another order each pass: a seed of its own.
+        this->Relaxations[pass].SetRule(run.RelaxationRules[pass]);
+        this->Relaxations[pass].Begin(
+          run.NX(), run.NY(), this->RelaxFirst(), seed + 0x9E3779B97F4A7C15ULL * pass, this->First);
       }
       this->Backlog.SetSink(this);
       this->Started = true;
@@ -276,7 +338,7 @@ public:
     {
       this->Kernel.SwapLayerBuffers(ended.Kernel);
       this->Runner.SwapBuffers(ended.Runner);
-      std::swap(this->Relaxation, ended.Relaxation);
+      std::swap(this->Relaxations, ended.Relaxations);
       std::swap(this->Values, ended.Values);
       ended.Release();
     }
@@ -286,7 +348,7 @@ public:
     void Release()
     {
       this->Kernel.ReleaseLayerBuffers();
-      this->Relaxation = vtkBlueNoiseRelaxation();
+      this->Relaxations = std::vector<vtkBlueNoiseRelaxation>();
       this->Runner.ReleaseBuffers();
       this->Values = vtkSamplingDensity::ValueTable();
     }
@@ -353,6 +415,7 @@ public:
   bool Executing = false; // inside RequestData (see RequestData)
   bool NeedsStatistics = false; // every piece takes part, even one without layers
   bool Relaxing = false;        // the relaxation holds layers back
+  std::vector<int> RelaxationRules; // of its passes (vtkBlueNoiseRelaxation::Rules)
 
   // The run.
   vtkSamplingDensity Density;
@@ -405,7 +468,9 @@ public:
     if (!step.Statistics && this->Relaxing)
     {
       extent[4] = std::min(step.First,
-        std::max(this->Sampled[4], step.First - (vtkBlueNoiseRelaxation::MaximumRadius + 2)));
+        std::max(this->Sampled[4],
+          step.First -
+            static_cast<int>(this->RelaxationRules.size()) * (vtkBlueNoiseRelaxation::MaximumRadius + 2)));
     }
   }
 };
@@ -434,6 +499,12 @@ vtkMTimeType vtkErrorDiffusionSampler::GetMTime()
     t = std::max(t, this->TransferFunction->GetMTime());
   }
   return t;
+}
+
+//------------------------------------------------------------------------------
+bool vtkErrorDiffusionSampler::IsErrorDiffusion(int method)
+{
+  return method == METHOD_ERROR_DIFFUSION || !RelaxationRules(method).empty();
 }
 
 //------------------------------------------------------------------------------
@@ -610,10 +681,10 @@ void vtkErrorDiffusionSampler::PlanRun(const int whole[6], int piece, int pieces
   run.Sampled[4] = emptyPiece ? 0 : parts[piece][0];
   run.Sampled[5] = emptyPiece ? -1 : parts[piece][1];
   // The whole-volume methods take their piece at once, without overlap.
-  const bool atOnce =
-    this->Method == METHOD_POISSON_DISK || this->Method == METHOD_SAMPLE_ELIMINATION;
+  const bool atOnce = IsWholeVolumeMethod(this->Method);
   const int slabs = atOnce ? 1 : this->NumberOfSlabs;
-  run.Relaxing = this->Method == METHOD_RELAXED_ERROR_DIFFUSION;
+  run.RelaxationRules = RelaxationRules(this->Method);
+  run.Relaxing = !run.RelaxationRules.empty();
   run.ScanFirst =
     std::max(run.Whole[4], run.Sampled[4] - (run.Piece && !atOnce ? this->OverlapLayers : 0));
   run.Steps.clear();
@@ -802,8 +873,7 @@ bool vtkErrorDiffusionSampler::StartRun(vtkInformation*, vtkInformationVector**)
   }
   vtkErrorDiffusionParameterTable table;
   std::string error;
-  const bool diffusion =
-    this->Method == METHOD_ERROR_DIFFUSION || this->Method == METHOD_RELAXED_ERROR_DIFFUSION;
+  const bool diffusion = IsErrorDiffusion(this->Method);
   if (diffusion && !SelectTable(this->ParameterSet, this->ParameterFile, table, error))
   {
     vtkErrorMacro(<< error);
@@ -1158,8 +1228,7 @@ vtkErrorDiffusionSampler::vtkInternals::Schedule::Schedule(
   , Run(*self->Internals)
   , Input(input)
   , Array(array)
-  , Diffusion(self->Method == METHOD_ERROR_DIFFUSION ||
-      self->Method == METHOD_RELAXED_ERROR_DIFFUSION)
+  , Diffusion(IsErrorDiffusion(self->Method))
 {
   const Step& step = this->Run.Steps[this->Run.Current];
   for (auto& part : this->Run.Parts)
@@ -1520,8 +1589,7 @@ bool vtkErrorDiffusionSampler::SampleSlab(vtkImageData* input, vtkInformationVec
   {
     return false;
   }
-  const bool whole =
-    this->Method == METHOD_POISSON_DISK || this->Method == METHOD_SAMPLE_ELIMINATION;
+  const bool whole = IsWholeVolumeMethod(this->Method);
   return whole ? this->SampleWhole(input, array) : this->ScanSlab(input, array);
 }
 
@@ -1542,8 +1610,7 @@ void vtkErrorDiffusionSampler::FinishOutput(
   {
     if (run.Parts.size() == 1) // parts side by side dropped theirs in ScanParts
     {
-      run.First().DropAheadPoints(
-        this->Method == METHOD_ERROR_DIFFUSION || this->Method == METHOD_RELAXED_ERROR_DIFFUSION);
+      run.First().DropAheadPoints(IsErrorDiffusion(this->Method));
     }
     points->SetPoints(run.Assembler.End());
     points->SetVerts(run.Assembler.MakeVertices(points->GetNumberOfPoints()));

@@ -367,8 +367,9 @@ void BM_Kernel(benchmark::State& state)
   state.counters["x_tight"] = plain / best;
 }
 
-// The default method's relaxation pass alone, on the kernel's samples of a
-// constant cube; x_kernel = the kernel's time on that cube / this time.
+// A relaxation pass alone, by the default method's rule (rule 0) or the
+// energy rule (1), on the kernel's samples of a constant cube; x_kernel = the
+// kernel's time on that cube / this time.
 void BM_Relaxation(benchmark::State& state)
 {
   const int n = static_cast<int>(state.range(0));
@@ -390,6 +391,7 @@ void BM_Relaxation(benchmark::State& state)
   {
     const auto start = Clock::now();
     vtkBlueNoiseRelaxation relaxation;
+    relaxation.SetRule(static_cast<int>(state.range(2)));
     relaxation.Begin(n, n, 0, 1);
     vtkIdType samples = 0;
     for (int z = 0; z < n; ++z)
@@ -418,9 +420,10 @@ BENCHMARK(BM_Kernel)
   ->ComputeStatistics("min", Fastest)
   ->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_Relaxation)
-  ->ArgNames({ "L", "g255" })
-  ->ArgsProduct({ { 256 }, { 8, 32, 48 } })
-  ->Args({ 512, 8 })
+  ->ArgNames({ "L", "g255", "rule" })
+  ->ArgsProduct({ { 256 }, { 8, 32, 48 }, { 0 } })
+  ->Args({ 512, 8, 0 })
+  ->ArgsProduct({ { 256 }, { 8, 32 }, { 1 } })
   ->ComputeStatistics("min", Fastest)
   ->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_Filter)
@@ -428,6 +431,7 @@ BENCHMARK(BM_Filter)
   ->ArgsProduct({ { 256, 512 }, { 8, 127 }, { 0, 1 }, { 0 }, { 1 }, { 2, 0 } })
   ->ArgsProduct({ { 256 }, { 8 }, { 0 }, { 1 }, { 0, 1 }, { 2, 0 } })
   ->ArgsProduct({ { 256 }, { 4, 16, 32, 64 }, { 0 }, { 0 }, { 1 }, { 2, 0 } })
+  ->ArgsProduct({ { 256 }, { 4, 8, 16, 32, 64 }, { 0 }, { 0 }, { 1 }, { 5 } })
   ->UseRealTime() // two threads: CPU time of the caller alone would flatter
   ->ComputeStatistics("min", Fastest)
   ->Unit(benchmark::kMillisecond);

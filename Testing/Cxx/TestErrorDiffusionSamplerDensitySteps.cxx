@@ -3,8 +3,13 @@
 // A cube of density 4/255 inside a margin ten times as dense, and inside one
 // a tenth as dense, is sampled along its faces as the same cube alone is:
 // the points per voxel of its three outer layers (the mean over four seeds)
-// within 0.15 of the lone cube's, with both error-diffusion methods, and its
-// count within 2 % of its densities' sum. Without the density-step rules
+// within 0.15 of the lone cube's, with the three error-diffusion methods, and
+// its count within 2 % of its densities' sum. Inside margins of 3, 1.3 and
+// 0.77 times its density (steps the scan diffuses across) the relaxed
+// methods' outer layers hold what the paper's method's do, within 0.15: the
+// relaxations leave no skin (the faces rule's narrow region; with the
+// similar densities' factor for it, the face layer next to three times the
+// density held far less than its density with both relaxed methods). Without the density-step rules
 // (vtkErrorDiffusionScan, vtkBlueNoiseRelaxation) the paper's method put
 // twice the density into the face layer in the dense margin (error carried
 // over the step fires the sparse side at once), and the default emptied it
@@ -101,25 +106,37 @@ std::string Format(const std::array<double, 3>& p)
 int main()
 {
   const double expected = static_cast<double>(G) * Cube * Cube * Cube;
-  for (const int method : { vtkErrorDiffusionSampler::METHOD_RELAXED_ERROR_DIFFUSION,
-         vtkErrorDiffusionSampler::METHOD_ERROR_DIFFUSION })
+  const int paper = vtkErrorDiffusionSampler::METHOD_ERROR_DIFFUSION;
+  for (const int method : { static_cast<int>(vtkErrorDiffusionSampler::METHOD_RELAXED_ERROR_DIFFUSION),
+         static_cast<int>(vtkErrorDiffusionSampler::METHOD_ENERGY_RELAXED_ERROR_DIFFUSION), paper })
   {
-    const std::string name =
-      method == vtkErrorDiffusionSampler::METHOD_ERROR_DIFFUSION ? "paper's method" : "default";
+    const std::string name = method == paper ? "paper's method"
+      : method == vtkErrorDiffusionSampler::METHOD_RELAXED_ERROR_DIFFUSION ? "default"
+                                                                           : "energy relaxed";
     const Result alone = SampleCube(0, 1.0f, method);
     std::cout << name << ", the cube alone: points per voxel / g at depths 0, 1, 2: "
               << Format(alone.Profile) << std::endl;
-    for (const float factor : { 10.0f, 0.1f })
+    for (const float factor : { 10.0f, 0.1f, 3.0f, 1.3f, 0.77f })
     {
+      // Across a step of a factor of 4 or more the scan samples each side as
+      // if alone; within it the scan lets error across, and its own profile
+      // is the reference for the relaxations.
+      const bool apart = factor >= 4.0f || factor <= 0.25f;
+      if (!apart && method == paper)
+      {
+        continue;
+      }
       const Result inside = SampleCube(16, factor, method);
+      const Result reference = apart ? alone : SampleCube(16, factor, paper);
       const std::string where = name + ", in a margin of x" + Str(factor) + " the density";
+      const std::string against = apart ? "alone" : "the paper's method";
       std::cout << where << ": " << Format(inside.Profile) << "; " << inside.Points
                 << " points of " << expected << std::endl;
       for (int depth = 0; depth < 3; ++depth)
       {
-        Check(std::abs(inside.Profile[depth] - alone.Profile[depth]) <= 0.15,
+        Check(std::abs(inside.Profile[depth] - reference.Profile[depth]) <= 0.15,
           where + ": depth " + Str(depth) + " holds " + Str(inside.Profile[depth]) +
-            " of its density, alone " + Str(alone.Profile[depth]));
+            " of its density, " + against + " " + Str(reference.Profile[depth]));
       }
       Check(std::abs(inside.Points - expected) <= 0.02 * expected,
         where + ": the cube holds " + Str(inside.Points) + " points of " + Str(expected));

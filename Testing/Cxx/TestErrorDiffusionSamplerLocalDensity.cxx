@@ -122,8 +122,9 @@ void CheckAll()
 
 int main()
 {
-  // The default (relaxed) and the paper's error diffusion.
+  // The default (relaxed), the energy relaxed and the paper's error diffusion.
   for (int method : { vtkErrorDiffusionSampler::METHOD_RELAXED_ERROR_DIFFUSION,
+         vtkErrorDiffusionSampler::METHOD_ENERGY_RELAXED_ERROR_DIFFUSION,
          vtkErrorDiffusionSampler::METHOD_ERROR_DIFFUSION })
   {
     Method = method;

@@ -5,7 +5,7 @@
 // chunks a part is scanned in; the count stays exact (within max(2,
 // 0.05 %)); the 16 layers around each seam hold their expected count within
 // 2 %; the mask matches the points and the attributes their voxels (numeric
-// and string arrays); both the paper's method and the relaxed one; progress
+// and string arrays); the paper's method and both relaxed ones; progress
 // goes from 0 to 1 and never back; an abort between chunks leaves an empty
 // output.
 #include "SamplerTestUtilities.h"
@@ -120,21 +120,27 @@ int main()
     return points;
   };
 
-  // Both error-diffusion methods: the paper's, and the default (relaxed), whose
-  // relaxation runs in each part.
+  // The error-diffusion methods: the paper's, the default (relaxed), whose
+  // relaxation runs in each part, and the energy relaxed one, whose two
+  // passes do.
   const int ed = vtkErrorDiffusionSampler::METHOD_ERROR_DIFFUSION;
   const int relaxed = vtkErrorDiffusionSampler::METHOD_RELAXED_ERROR_DIFFUSION;
+  const int energy = vtkErrorDiffusionSampler::METHOD_ENERGY_RELAXED_ERROR_DIFFUSION;
+  const auto nameOf = [&](int method) {
+    return std::string(method == ed ? "paper's" : method == energy ? "energy" : "default") +
+      " method";
+  };
   // The runs on several threads first (see WithThreads).
   std::map<int, std::array<vtkSmartPointer<vtkPolyData>, 3>> several;
-  for (const int method : { relaxed, ed })
+  for (const int method : { relaxed, energy, ed })
   {
     several[method] = { run(4, 1, PartLayers, method), run(3, 7, PartLayers, method),
       run(4, 1, 65536, method) };
   }
-  vtkSmartPointer<vtkPolyData> one;
-  for (const int method : { relaxed, ed })
+  vtkSmartPointer<vtkPolyData> one; // the paper's method's, last: the checks below compare with it
+  for (const int method : { relaxed, energy, ed })
   {
-    const std::string name = method == ed ? "paper's method: " : "default method: ";
+    const std::string name = nameOf(method) + ": ";
     one = run(1, 1, PartLayers, method);
     const auto& [four, streamed, whole] = several[method];
     Check(SamePoints(one, four), name + "1 and 4 threads: the same points (" +
@@ -166,13 +172,16 @@ int main()
 
   // The seams cost little blue noise: on a constant cube of 96^3 in parts of
   // 32 layers, the whole set's L(g) within 2 % and its mean anisotropy within
-  // 0.5 dB of one part's, each averaged over 2 seeds.
+  // 0.5 dB of one part's, each averaged over 2 seeds. The energy relaxed
+  // method's within 5 %: it takes L(g) well below the default's,
+  // but near a seam its passes see the other part's layers as scanned (below)
+  // or not at all (above), and lose more of it there.
   {
     const int n = 96;
     auto cube = MakeVolume(n, n, n, [](int, int, int) { return 8.0f / 255.0f; });
-    for (const int method : { relaxed, ed })
+    for (const int method : { relaxed, ed, energy })
     {
-      const std::string name = method == ed ? "paper's method: " : "default method: ";
+      const std::string name = nameOf(method) + ": ";
       double figures[2][2] = { { 0.0, 0.0 }, { 0.0, 0.0 } }; // [parts][anisotropy, L]
       for (int parts = 0; parts < 2; ++parts)
       {
@@ -196,7 +205,7 @@ int main()
       Check(std::abs(figures[1][0] - figures[0][0]) <= 0.5,
         name + "3 parts: mean anisotropy " + Str(figures[1][0]) + " dB, one part " +
           Str(figures[0][0]) + " dB");
-      Check(std::abs(figures[1][1] / figures[0][1] - 1.0) <= 0.02,
+      Check(std::abs(figures[1][1] / figures[0][1] - 1.0) <= (method == energy ? 0.05 : 0.02),
         name + "3 parts: L " + Str(figures[1][1]) + ", one part " + Str(figures[0][1]));
     }
   }
@@ -318,14 +327,13 @@ int main()
     auto wide = MakeVolume(CX, CY, CZ, [](int i, int j, int k) {
       return 0.01f + 0.1f * (0.5f + 0.5f * std::sin(k / 3.0f)) * (i + j) / float(CX + CY);
     });
-    for (const int method : { relaxed, ed })
+    for (const int method : { relaxed, ed, energy })
     {
       const auto sample = [&](int threads) { return run(threads, 1, 6, method, wide); };
       auto chunked = sample(3);
       auto single = sample(1);
       Check(single->GetNumberOfPoints() > 100000 && SamePoints(chunked, single),
-        std::string(method == ed ? "paper's" : "default") +
-          " method, parts of several chunks: the same points on 3 threads as on 1 (" +
+        nameOf(method) + ", parts of several chunks: the same points on 3 threads as on 1 (" +
           Str(chunked->GetNumberOfPoints()) + ", " + Str(single->GetNumberOfPoints()) + ")");
     }
   }

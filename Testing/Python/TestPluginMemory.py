@@ -120,11 +120,11 @@ def run_delete(size):
 
 # ---------------------------------------------------------------------------
 METHODS = ["Relaxed Error Diffusion", "Error Diffusion", "White Noise", "Poisson Disk",
-           "Sample Elimination"]
+           "Sample Elimination", "Energy Relaxed Error Diffusion"]
 
 
 def count_ok(method, n, budget):
-    if method in ("Relaxed Error Diffusion", "Error Diffusion"):
+    if method in ("Relaxed Error Diffusion", "Error Diffusion", "Energy Relaxed Error Diffusion"):
         return abs(n - budget) <= max(2, 5e-4 * budget)
     if method == "White Noise":  # a binomial draw
         return abs(n - budget) <= 6 * budget ** 0.5 + 2

@@ -314,6 +314,9 @@ check((vtkErrorDiffusionSampler.PARAMETERS_PAPER, vtkErrorDiffusionSampler.PARAM
        vtkErrorDiffusionSampler.PARAMETERS_CUSTOM) == (0, 1, 2), "ParameterSets enum")
 check((vtkErrorDiffusionSampler.METHOD_ERROR_DIFFUSION, vtkErrorDiffusionSampler.METHOD_WHITE_NOISE) == (0, 1),
       "Methods enum")
+s.SetMethodToEnergyRelaxedErrorDiffusion()
+check(s.GetMethod() == vtkErrorDiffusionSampler.METHOD_ENERGY_RELAXED_ERROR_DIFFUSION == 5,
+      "SetMethodToEnergyRelaxedErrorDiffusion")
 s.UseCustomScalarRangeOff()
 s.GenerateMaskOff()
 check(not s.GetUseCustomScalarRange() and not s.GetGenerateMask(), "boolean Off macros")
