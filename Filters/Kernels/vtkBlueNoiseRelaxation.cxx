@@ -1002,55 +1002,77 @@ void vtkBlueNoiseRelaxation::MoveByEnergy(int x, int y, int z, float g)
   }
   float energy[27];
   this->Energies(energy);
-  // A move must lower the energy by more than the sums' rounding.
-  float best = energy[13] * (1.0f - EnergyMargin);
-  int target = -1;
-  unsigned known = 0, open = 0; // the faces' rule, asked as needed
+  // The neighbors below (1 - EnergyMargin) E(p) (a move must lower the
+  // energy by more than the sums' rounding), the lowest first and among
+  // equals the first in the order from `start`: the first one the sample may
+  // move to is its target. Each lowest is found without a branch on the
+  // energies, which come in no order a branch could learn.
+  const float limit = energy[13] * (1.0f - EnergyMargin);
   const int start = EnergyStart(this->Seed, x, y, z);
-  for (int n = 0; n < 27; ++n)
+  unsigned left = ((1u << 27) - 1) & ~(1u << 13);
+  FaceLines open; // the faces' rule, asked as needed
+  for (;;)
   {
-    const int k = (start + n) % 27;
-    const int d[3] = { k % 3 - 1, k / 3 % 3 - 1, k / 9 - 1 };
-    if (k == 13 || !(energy[k] < best))
+    int target = -1;
+    float low = limit;
+    for (int n = 0; n < 27; ++n)
     {
-      continue;
+      const int k = start + n < 27 ? start + n : start + n - 27;
+      const bool lower = ((left >> k) & 1) && energy[k] < low;
+      low = lower ? energy[k] : low;
+      target = lower ? k : target;
     }
-    const int X = x + d[0], Y = y + d[1];
-    const float* density = this->Densities[d[2] + 1];
-    if (X < 0 || Y < 0 || X >= this->NX || Y >= this->NY || !density ||
-      ((this->Window[(d[2] + Reach) * Span + d[1] + Reach] >> (32 + d[0])) & 1))
+    if (target < 0)
     {
-      continue; // outside the volume, in a final layer, or a sample
+      return;
     }
-    const float gc = density[X + static_cast<size_t>(this->NX) * Y];
-    if (!Relaxable(gc) || std::abs(gc - g) > DensityTolerance * g)
+    const int d[3] = { target % 3 - 1, target / 3 % 3 - 1, target / 9 - 1 };
+    if (this->EnergyTargetOpen(x, y, g, d, cls, region, open))
     {
-      continue;
+      this->Move(x, y, z, d[0], d[1], d[2]);
+      return;
     }
-    bool allowed = true;
-    for (int axis = 0; axis < 3 && allowed; ++axis)
+    left &= ~(1u << target);
+  }
+}
+
+//------------------------------------------------------------------------------
+// Whether the sample at (x, y) of the layer relaxed, of density g and class
+// `cls`, may move by d: into the volume, a layer not final, an empty voxel
+// of a density within DensityTolerance, and along each axis d has open by
+// the faces' rule (what `open` has not asked yet, asked and kept there).
+bool vtkBlueNoiseRelaxation::EnergyTargetOpen(
+  int x, int y, float g, const int d[3], int cls, bool region, FaceLines& open) const
+{
+  const int X = x + d[0], Y = y + d[1];
+  const float* density = this->Densities[d[2] + 1];
+  if (X < 0 || Y < 0 || X >= this->NX || Y >= this->NY || !density ||
+    ((this->Window[(d[2] + Reach) * Span + d[1] + Reach] >> (32 + d[0])) & 1))
+  {
+    return false; // outside the volume, in a final layer, or a sample
+  }
+  const float gc = density[X + static_cast<size_t>(this->NX) * Y];
+  if (!Relaxable(gc) || std::abs(gc - g) > DensityTolerance * g)
+  {
+    return false;
+  }
+  for (int axis = 0; axis < 3; ++axis)
+  {
+    if (d[axis] != 0)
     {
-      if (d[axis] != 0)
+      const int face = 2 * axis + (d[axis] < 0 ? 1 : 0);
+      if (!((open.Known >> face) & 1))
       {
-        const int face = 2 * axis + (d[axis] < 0 ? 1 : 0);
-        if (!((known >> face) & 1))
-        {
-          known |= 1u << face;
-          open |= static_cast<unsigned>(this->LineOpen(x, y, face, cls, region)) << face;
-        }
-        allowed = (open >> face) & 1;
+        open.Known |= 1u << face;
+        open.Open |= static_cast<unsigned>(this->LineOpen(x, y, face, cls, region)) << face;
+      }
+      if (!((open.Open >> face) & 1))
+      {
+        return false;
       }
     }
-    if (allowed)
-    {
-      best = energy[k];
-      target = k;
-    }
   }
-  if (target >= 0)
-  {
-    this->Move(x, y, z, target % 3 - 1, target / 3 % 3 - 1, target / 9 - 1);
-  }
+  return true;
 }
 
 //------------------------------------------------------------------------------

@@ -280,6 +280,12 @@ private:
   void MoveBySpacing(int x, int y, int z, float g);
   void MoveByEnergy(int x, int y, int z, float g);
   void Energies(float energy[27]) const;
+  struct FaceLines // which faces' lines were asked (Known), and which are open
+  {
+    unsigned Known = 0;
+    unsigned Open = 0;
+  };
+  bool EnergyTargetOpen(int x, int y, float g, const int d[3], int cls, bool region, FaceLines& open) const;
   bool LineOpen(int x, int y, int face, int cls, bool alike) const;
   void Move(int x, int y, int z, int dx, int dy, int dz);
   void Release(int z);
