@@ -240,7 +240,7 @@ public:
         // An overlap layer: it settles the scan, and the last few are what the
         // relaxation of the part's first layers sees below them.
         // Each pass returns it at once, as it came.
-        if (this->Run->Relaxing && z >= this->RelaxFirst())
+        if (this->Run->Relaxing() && z >= this->RelaxFirst())
         {
           for (vtkBlueNoiseRelaxation& pass : this->Relaxations)
           {
@@ -249,7 +249,7 @@ public:
         }
         return;
       }
-      if (!this->Run->Relaxing)
+      if (!this->Run->Relaxing())
       {
         this->Emit(z, density, mask, count);
         return;
@@ -414,8 +414,8 @@ public:
   bool Running = false;
   bool Executing = false; // inside RequestData (see RequestData)
   bool NeedsStatistics = false; // every piece takes part, even one without layers
-  bool Relaxing = false;        // the relaxation holds layers back
   std::vector<int> RelaxationRules; // of its passes (vtkBlueNoiseRelaxation::Rules)
+  bool Relaxing() const { return !this->RelaxationRules.empty(); } // layers held back
 
   // The run.
   vtkSamplingDensity Density;
@@ -465,7 +465,7 @@ public:
     {
       extent[5] = step.Last + 1;
     }
-    if (!step.Statistics && this->Relaxing)
+    if (!step.Statistics && this->Relaxing())
     {
       extent[4] = std::min(step.First,
         std::max(this->Sampled[4],
@@ -684,7 +684,6 @@ void vtkErrorDiffusionSampler::PlanRun(const int whole[6], int piece, int pieces
   const bool atOnce = IsWholeVolumeMethod(this->Method);
   const int slabs = atOnce ? 1 : this->NumberOfSlabs;
   run.RelaxationRules = RelaxationRules(this->Method);
-  run.Relaxing = !run.RelaxationRules.empty();
   run.ScanFirst =
     std::max(run.Whole[4], run.Sampled[4] - (run.Piece && !atOnce ? this->OverlapLayers : 0));
   run.Steps.clear();
@@ -1071,7 +1070,7 @@ public:
   unsigned char* MaskStorage(int k) override
   {
     const int z = this->First + k;
-    if (!this->Run.Mask || this->Run.Relaxing || z < this->Work.First)
+    if (!this->Run.Mask || this->Run.Relaxing() || z < this->Work.First)
     {
       return nullptr;
     }
@@ -1086,7 +1085,7 @@ public:
     }
   }
 
-  bool Idle() override { return this->Run.Relaxing && this->Work.Backlog.EmitOne(); }
+  bool Idle() override { return this->Run.Relaxing() && this->Work.Backlog.EmitOne(); }
 
   bool Consume(const vtkErrorDiffusionLayerRunner::Layer& l) override
   {
