@@ -271,7 +271,8 @@ void vtkBlueNoiseRelaxation::SetDensity(float g)
   // a table indexed by a hash of the density's bits.
   std::uint32_t bits;
   std::memcpy(&bits, &g, sizeof(bits));
-  Roots& roots = this->RootCache[(bits * 0x9E3779B1u) >> (32 - RootCacheBits)];
+  this->Current = (bits * 0x9E3779B1u) >> (32 - RootCacheBits);
+  Roots& roots = this->RootCache[this->Current];
   if (roots.Density != g)
   {
     roots.Density = g;
@@ -303,7 +304,6 @@ void vtkBlueNoiseRelaxation::SetDensity(float g)
   this->Limit = roots.Limit;
   this->Radius = roots.Radius;
   this->Cap = roots.Cap;
-  std::copy(std::begin(roots.Weights), std::end(roots.Weights), this->Weights);
 }
 
 //------------------------------------------------------------------------------
@@ -382,6 +382,15 @@ vtkBlueNoiseRelaxation::RowSet vtkBlueNoiseRelaxation::MakeRows(int radius, int 
     k += n;
   }
   return set;
+}
+
+//------------------------------------------------------------------------------
+// The rows the current density's rule reads around sample (x, y), into the
+// window, without the sample itself (it is not its own neighbor).
+void vtkBlueNoiseRelaxation::LoadAround(int x, int y)
+{
+  this->Load(this->CurrentRows().Loaded, x, y);
+  this->Window[Reach * Span + Reach] &= ~(std::uint64_t(1) << 32);
 }
 
 //------------------------------------------------------------------------------
@@ -848,8 +857,7 @@ void vtkBlueNoiseRelaxation::Move(int x, int y, int z, int dx, int dy, int dz)
 void vtkBlueNoiseRelaxation::MoveBySpacing(int x, int y, int z, float g)
 {
   const std::vector<RowRun>& loaded = this->CurrentRows().Loaded;
-  this->Load(loaded, x, y);
-  this->Window[Reach * Span + Reach] &= ~(std::uint64_t(1) << 32); // not its own neighbor
+  this->LoadAround(x, y);
   int current = this->Nearest(0, 0, 0, -1);
   if (current >= this->Limit)
   {
@@ -924,7 +932,7 @@ void vtkBlueNoiseRelaxation::Energies(float energy[27]) const
   // w[d], |d| <= MaximumRadius + 1; even, so a row's sample at sx adds to the
   // neighbors dx = -1, 0, 1 the four weights from w[-sx - 1] on (the fourth,
   // of no neighbor, is carried along for four lanes at a time).
-  const float* w = this->Weights + MaximumRadius + 1;
+  const float* w = this->RootCache[this->Current].Weights + MaximumRadius + 1;
   const std::uint64_t keep = ((std::uint64_t(1) << (2 * reach + 1)) - 1) << (32 - reach);
   float sums[3][3][4] = {}; // by dz + 1, dy + 1, dx + 1
   for (int dz = -reach; dz <= reach; ++dz)
@@ -980,19 +988,9 @@ void vtkBlueNoiseRelaxation::Energies(float energy[27]) const
 }
 
 //------------------------------------------------------------------------------
-// Whether face f of sample (x, y) of the layer relaxed is open to moves by the
-// faces' rule (the line of LineInRegion in the region).
-inline bool vtkBlueNoiseRelaxation::LineOpen(int x, int y, int face, int cls, bool alike) const
-{
-  return this->Whole ? !((this->BandFaces(x, y) >> face) & 1)
-                     : this->LineInRegion(x, y, face, cls, alike);
-}
-
-//------------------------------------------------------------------------------
 void vtkBlueNoiseRelaxation::MoveByEnergy(int x, int y, int z, float g)
 {
-  this->Load(this->CurrentRows().Loaded, x, y);
-  this->Window[Reach * Span + Reach] &= ~(std::uint64_t(1) << 32); // not its own neighbor
+  this->LoadAround(x, y);
   const int cls = vtkBlueNoiseDensityClass::Of(g);
   bool alike, region;
   this->Alikeness(x, y, cls, alike, region);
@@ -1010,7 +1008,14 @@ void vtkBlueNoiseRelaxation::MoveByEnergy(int x, int y, int z, float g)
   const float limit = energy[13] * (1.0f - EnergyMargin);
   const int start = EnergyStart(this->Seed, x, y, z);
   unsigned left = ((1u << 27) - 1) & ~(1u << 13);
-  FaceLines open; // the faces' rule, asked as needed
+  // The faces' rule, asked as needed; where the layers in reach are whole,
+  // at once from the band's faces.
+  FaceLines open;
+  if (this->Whole)
+  {
+    open.Known = 0x3F;
+    open.Open = ~this->BandFaces(x, y) & 0x3Fu;
+  }
   for (;;)
   {
     int target = -1;
@@ -1064,7 +1069,7 @@ bool vtkBlueNoiseRelaxation::EnergyTargetOpen(
       if (!((open.Known >> face) & 1))
       {
         open.Known |= 1u << face;
-        open.Open |= static_cast<unsigned>(this->LineOpen(x, y, face, cls, region)) << face;
+        open.Open |= static_cast<unsigned>(this->LineInRegion(x, y, face, cls, region)) << face;
       }
       if (!((open.Open >> face) & 1))
       {

@@ -260,6 +260,7 @@ private:
   };
   static RowSet MakeRows(int radius, int cap);
   void Load(const std::vector<RowRun>& runs, int x, int y);
+  void LoadAround(int x, int y);
   void Classify(Slot& slot, const float* density);
   bool MixedAround(int x, int y, int cls, int classes) const;
   void Alikeness(int x, int y, int cls, bool& counted, bool& region) const;
@@ -286,7 +287,6 @@ private:
     unsigned Open = 0;
   };
   bool EnergyTargetOpen(int x, int y, float g, const int d[3], int cls, bool region, FaceLines& open) const;
-  bool LineOpen(int x, int y, int face, int cls, bool alike) const;
   void Move(int x, int y, int z, int dx, int dy, int dz);
   void Release(int z);
   void RelaxReady();
@@ -307,7 +307,6 @@ private:
   int Cap = 1;                // distances are counted up to this one (squared)
   int Rule = RULE_SPACING;
   static bool Within(int a, int b, int classes) { return a - b <= classes && b - a <= classes; }
-  float Weights[2 * MaximumRadius + 3] = {}; // the energy rule's, of LastDensity
   struct Roots // Limit, Radius and Cap of a density (and the energy rule's Weights)
   {
     float Density = -1.0f;
@@ -318,6 +317,7 @@ private:
   };
   static constexpr int RootCacheBits = 6;
   Roots RootCache[1 << RootCacheBits];
+  unsigned Current = 0; // the entry of LastDensity (its Weights for the energy rule)
   // The row sets by radius and cap (at radius * RowSetCaps + cap), made as
   // they come up (SetDensity); the energy rule's at cap 0 (the spacing
   // rule's caps are at least 2).
