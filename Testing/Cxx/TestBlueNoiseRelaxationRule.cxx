@@ -2,12 +2,13 @@
 // SPDX-License-Identifier: BSD-3-Clause
 // vtkBlueNoiseRelaxation against its definition (the class comment), both
 // rules, written here the plain way: the whole volume in memory, the nearest
-// sample and the energies by loops over the box around a voxel. Random masks over densities that vary by voxel
-// (within and beyond the move tolerance, above 1/4 and 0, whole layers
-// where nothing moves, and similar densities with holes of 0), at several volume shapes (rows shorter and longer
-// than a word), pushed layer by layer:
-// the relaxed masks must be the same bit for bit, and the counts kept (in
-// all, and in each layer returned).
+// sample and the energies by loops over the box around a voxel. Random
+// masks over densities that vary by voxel (within and beyond the move
+// tolerance, above 1/4 and 0, whole layers where nothing moves, and similar
+// densities with holes of 0), at several volume shapes (rows shorter and
+// longer than a word), pushed layer by layer: the relaxed masks must be the
+// same bit for bit, and the counts kept (in all, and in each layer
+// returned).
 #include "BlueNoiseTestUtilities.h"
 #include "vtkBlueNoiseDensityClass.h"
 #include "vtkBlueNoiseRelaxation.h"
@@ -35,12 +36,7 @@ struct Volume
   }
 };
 
-// Whether densities a and b are similar (the searches count each other's
-// samples), and in one region (of the faces rule).
-bool Similar(float a, float b)
-{
-  return vtkBlueNoiseDensityClass::Similar(a, b);
-}
+// Whether densities a and b are in one region (of the faces rule).
 bool InOneRegion(float a, float b)
 {
   return std::abs(vtkBlueNoiseDensityClass::Of(a) - vtkBlueNoiseDensityClass::Of(b)) <=
@@ -66,7 +62,7 @@ int Nearest(const Volume& v, int x, int y, int z, int radius, int cap, const int
         const int X = x + dx, Y = y + dy, Z = z + dz;
         if (v.Inside(X, Y, Z) && v.Mask[v.Index(X, Y, Z)] &&
           !(X == except[0] && Y == except[1] && Z == except[2]) &&
-          Similar(v.Density[v.Index(X, Y, Z)], g))
+          vtkBlueNoiseDensityClass::Similar(v.Density[v.Index(X, Y, Z)], g))
         {
           best = std::min(best, dx * dx + dy * dy + dz * dz);
         }
@@ -162,7 +158,7 @@ void Energies(const Volume& v, const int p[3], float g, const float* w, int widt
       {
         const int X = p[0] + dx, Y = p[1] + dy, Z = p[2] + dz;
         if ((dx || dy || dz) && v.Inside(X, Y, Z) && v.Mask[v.Index(X, Y, Z)] &&
-          Similar(v.Density[v.Index(X, Y, Z)], g))
+          vtkBlueNoiseDensityClass::Similar(v.Density[v.Index(X, Y, Z)], g))
         {
           for (int ex = -1; ex <= 1; ++ex)
           {
