@@ -438,12 +438,7 @@ void vtkBlueNoiseRelaxation::Classify(Slot& slot, const float* density)
   }
   this->ClassScratch.resize(layer);
   unsigned char* classes = this->ClassScratch.data();
-  for (size_t i = 0; i < layer; ++i)
-  {
-    std::uint32_t bits;
-    std::memcpy(&bits, density + i, sizeof(bits));
-    classes[i] = static_cast<unsigned char>(vtkBlueNoiseDensityClass::OfBits(bits));
-  }
+  vtkBlueNoiseDensityClass::OfEach(density, layer, classes);
   slot.WordLow.assign(slot.Bits.size(), 255);
   slot.WordHigh.assign(slot.Bits.size(), 0);
   slot.Full = std::all_of(classes, classes + layer, [](unsigned char c) { return c != 0; });

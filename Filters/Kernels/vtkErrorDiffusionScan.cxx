@@ -654,12 +654,7 @@ namespace
 void ClassesOf(const float* g, size_t n, std::vector<unsigned char>& classes)
 {
   classes.resize(n);
-  for (size_t i = 0; i < n; ++i)
-  {
-    std::uint32_t bits;
-    std::memcpy(&bits, g + i, sizeof(bits));
-    classes[i] = static_cast<unsigned char>(vtkBlueNoiseDensityClass::OfBits(bits));
-  }
+  vtkBlueNoiseDensityClass::OfEach(g, n, classes.data());
 }
 }
 
