@@ -430,22 +430,35 @@ struct Reservoir
   }
 };
 
+// What FindInterior marks a voxel for: the fast path (ScanRun), or no
+// density (not active, below 1), where the scan only clears the mask, a run
+// of voxels at a time; 0: the path of the faces (SpreadAtFace).
+constexpr unsigned char PathFast = 1;
+constexpr unsigned char PathEmpty = 2;
+
 // How many voxels of a row from idx on (step d, `left` of them to the row's
-// end) take the fast path: those marked in `interior` when given, else all
-// but the row's last when the row is `fast` (away from the faces of a layer
-// whose voxels and successors are all active).
+// end) are marked `path` in `interior`.
+int RunOf(const unsigned char* interior, vtkIdType idx, vtkIdType d, int left, unsigned char path)
+{
+  int run = 0;
+  while (run < left && interior[idx + run * d] == path)
+  {
+    ++run;
+  }
+  return run;
+}
+
+// How many voxels of a row from idx on take the fast path: those marked so
+// in `interior` when given, else all but the row's last when the row is
+// `fast` (away from the faces of a layer whose voxels and successors are
+// all active).
 int FastRun(const unsigned char* interior, vtkIdType idx, vtkIdType d, int left, bool fast)
 {
   if (!interior)
   {
     return fast ? left - 1 : 0;
   }
-  int run = 0;
-  while (run < left && interior[idx + run * d])
-  {
-    ++run;
-  }
-  return run;
+  return RunOf(interior, idx, d, left, PathFast);
 }
 }
 
@@ -602,10 +615,11 @@ bool vtkErrorDiffusionScan::TestLayers(
 }
 
 //------------------------------------------------------------------------------
-// Interior = the 3x3 erosion of "active here and in the next layer", with
-// the outside of the layer inactive, and with `steps` of "of densities
-// similar to one another" too: byte loops the compiler vectorizes, in memory
-// order whatever the orientation of the scan.
+// The path of each voxel of a layer: PathFast where the 3x3 erosion of
+// "active here and in the next layer" holds, with the outside of the layer
+// inactive, and with `steps` of "of densities similar to one another" too;
+// PathEmpty where there is no density. Byte loops the compiler vectorizes,
+// in memory order whatever the orientation of the scan.
 const unsigned char* vtkErrorDiffusionScan::FindInterior(
   const float* density, const float* next, bool steps)
 {
@@ -613,10 +627,25 @@ const unsigned char* vtkErrorDiffusionScan::FindInterior(
   const size_t layer = nx * ny;
   this->Interior.assign(layer, 0);
   this->InteriorWork.resize(layer);
-  if (nx < 3 || ny < 3)
+  if (nx >= 3 && ny >= 3)
   {
-    return this->Interior.data();
+    this->ErodeActive(density, next, steps);
   }
+  unsigned char* path = this->Interior.data();
+  for (size_t i = 0; i < layer; ++i)
+  {
+    // Not 0 < g: g <= 0 or NaN, none of them active (ErodeActive's 0).
+    path[i] |= static_cast<unsigned char>(!(density[i] > 0.0f)) * PathEmpty;
+  }
+  return path;
+}
+
+//------------------------------------------------------------------------------
+// PathFast into Interior (all 0) where FindInterior says.
+void vtkErrorDiffusionScan::ErodeActive(const float* density, const float* next, bool steps)
+{
+  const size_t nx = static_cast<size_t>(this->NX), ny = static_cast<size_t>(this->NY);
+  const size_t layer = nx * ny;
   unsigned char* both = this->InteriorWork.data();
   for (size_t i = 0; i < layer; ++i)
   {
@@ -645,7 +674,6 @@ const unsigned char* vtkErrorDiffusionScan::FindInterior(
   {
     this->KeepSimilarInterior(density, next);
   }
-  return this->Interior.data();
 }
 
 //------------------------------------------------------------------------------
@@ -848,6 +876,12 @@ vtkIdType vtkErrorDiffusionScan::ScanLayer(
   // the bulk of any real volume's support.
   const unsigned char* interior =
     allActive || !next ? nullptr : this->FindInterior(density, next, !similar);
+  if (interior)
+  {
+    // In memory order: the scan skips the voxels of no density, whose mask
+    // is 0, and along a column each store would be to a line of its own.
+    std::fill(mask, mask + static_cast<size_t>(this->NX) * this->NY, 0);
+  }
   if (!interior || similar)
   {
     this->ClassedLayer = nullptr; // the classes kept are of no layer to come
@@ -893,6 +927,14 @@ vtkIdType vtkErrorDiffusionScan::ScanLayer(
         p += run - 1;
         idx += (run - 1) * d;
         eidx += (run - 1) * ed;
+        continue;
+      }
+      const int empty = interior ? RunOf(interior, idx, d, s.NU - p, PathEmpty) : 0;
+      if (empty > 0) // their mask was cleared above, as their own test would
+      {
+        p += empty - 1;
+        idx += (empty - 1) * d;
+        eidx += (empty - 1) * ed;
         continue;
       }
       const float g = density[idx];

@@ -314,15 +314,17 @@ private:
   // Parameters by density, indexed by the top bits of min(g, 1 - g) as a
   // float (2^-8 relative steps); filled as densities come up.
   std::vector<LevelParameters> ParameterTable;
-  // In a layer with inactive voxels or density steps: 1 where the voxel's 3x3
-  // neighborhood is active in the layer and the next (all six targets are
-  // then active) and, with `steps`, of densities similar to one another.
+  // In a layer with inactive voxels or density steps, each voxel's path
+  // (FindInterior): 1 where the voxel's 3x3 neighborhood is active in the
+  // layer and the next (all six targets are then active) and, with `steps`,
+  // of densities similar to one another; 2 where it has no density.
   std::vector<unsigned char> Interior;
   std::vector<unsigned char> InteriorWork;
   std::vector<unsigned char> ClassLow, ClassHigh, ClassWork;
   std::vector<unsigned char> ClassCurrent, ClassNext; // of the layer and the next
   const float* ClassedLayer = nullptr;                // the densities ClassNext is of
   const unsigned char* FindInterior(const float* density, const float* next, bool steps);
+  void ErodeActive(const float* density, const float* next, bool steps);
   void KeepSimilarInterior(const float* density, const float* next);
   // The last successor layer tested: how many of its voxels are active, and
   // the lowest and highest of their densities.
