@@ -91,6 +91,17 @@ std::uint64_t AlikeBits(const unsigned char* classes, int cls, int n)
   return alike;
 }
 
+// low[i] = min(low[i], lower[i]) and high[i] = max(high[i], higher[i]), i < n.
+void LowerAndHigher(unsigned char* __restrict low, unsigned char* __restrict high,
+  const unsigned char* __restrict lower, const unsigned char* __restrict higher, size_t n)
+{
+  for (size_t i = 0; i < n; ++i)
+  {
+    low[i] = std::min(low[i], lower[i]);
+    high[i] = std::max(high[i], higher[i]);
+  }
+}
+
 inline bool Relaxable(float g)
 {
   return g > 0.0f && g <= vtkBlueNoiseRelaxation::MaximumDensity;
@@ -419,8 +430,7 @@ void vtkBlueNoiseRelaxation::Load(const std::vector<RowRun>& runs, int x, int y)
 // The classes of a layer's densities (DensityClass) into `slot`: the lowest
 // and highest of the positive ones per word and in all, and each voxel's
 // when they differ. A layer of one density (the test is cheap) is done at
-// once; the others in loops the compiler vectorizes (the lowest class as the
-// highest of 255 - c over the positive voxels, whose classes are not 0).
+// once; the others in loops the compiler vectorizes.
 void vtkBlueNoiseRelaxation::Classify(Slot& slot, const float* density)
 {
   const size_t layer = static_cast<size_t>(this->NX) * this->NY;
@@ -450,11 +460,13 @@ void vtkBlueNoiseRelaxation::Classify(Slot& slot, const float* density)
     for (int x0 = 0; x0 < this->NX; x0 += 64)
     {
       const int x1 = std::min(this->NX, x0 + 64);
-      unsigned char complement = 0, hi = 0; // of the lowest: 255 - it
+      // The lowest positive class as 1 + the lowest of c - 1 in bytes,
+      // where 0 wraps to 255: no branch on c.
+      unsigned char below = 255, hi = 0;
       for (int x = x0; x < x1; ++x)
       {
         const unsigned char c = row[x];
-        complement = std::max(complement, static_cast<unsigned char>(c ? 255 - c : 0));
+        below = std::min(below, static_cast<unsigned char>(c - 1));
         hi = std::max(hi, c);
       }
       const std::ptrdiff_t word = this->RowStart(y) + (x0 >> 6);
@@ -462,7 +474,7 @@ void vtkBlueNoiseRelaxation::Classify(Slot& slot, const float* density)
       {
         slot.Support[word] = PackBits(row + x0, x1 - x0);
       }
-      slot.WordLow[word] = static_cast<unsigned char>(hi ? 255 - complement : 255);
+      slot.WordLow[word] = static_cast<unsigned char>(hi ? below + 1 : 255);
       slot.WordHigh[word] = hi;
       low = std::min<int>(low, slot.WordLow[word]);
       high = std::max<int>(high, hi);
@@ -505,39 +517,33 @@ void vtkBlueNoiseRelaxation::FindMixed()
   {
     return;
   }
+  // Byte loops over raw pointers, innermost along the words: stores through
+  // the vectors' own would be reloads of their data at every byte (a char
+  // may alias anything), and no loop would vectorize.
   const size_t words = this->NoSamples.size();
-  std::vector<unsigned char>& low1 = this->MixedLayersLow; // over the layers
-  std::vector<unsigned char>& high1 = this->MixedLayersHigh;
-  low1.assign(words, 255);
-  high1.assign(words, 0);
+  this->MixedLayersLow.assign(words, 255); // over the layers
+  this->MixedLayersHigh.assign(words, 0);
+  unsigned char* low1 = this->MixedLayersLow.data();
+  unsigned char* high1 = this->MixedLayersHigh.data();
   for (const Slot* slot : this->Slots)
   {
-    if (!slot)
+    if (slot)
     {
-      continue;
-    }
-    for (size_t w = 0; w < words; ++w)
-    {
-      low1[w] = std::min(low1[w], slot->WordLow[w]);
-      high1[w] = std::max(high1[w], slot->WordHigh[w]);
+      LowerAndHigher(low1, high1, slot->WordLow.data(), slot->WordHigh.data(), words);
     }
   }
   this->MixedLow.assign(words, 255);
   this->MixedHigh.assign(words, 0);
+  unsigned char* rowLow = this->MixedLow.data();
+  unsigned char* rowHigh = this->MixedHigh.data();
   const std::ptrdiff_t stride = this->WordsPerRow;
   for (int y = 0; y < this->NY; ++y) // and over the rows
   {
     const std::ptrdiff_t start = this->RowStart(y) - 1;
-    for (std::ptrdiff_t w = 0; w < stride; ++w)
+    for (int dy = -Reach; dy <= Reach; ++dy)
     {
-      unsigned char lo = 255, hi = 0;
-      for (int dy = -Reach; dy <= Reach; ++dy)
-      {
-        lo = std::min(lo, low1[start + dy * stride + w]);
-        hi = std::max(hi, high1[start + dy * stride + w]);
-      }
-      this->MixedLow[start + w] = lo;
-      this->MixedHigh[start + w] = hi;
+      const std::ptrdiff_t from = start + dy * stride;
+      LowerAndHigher(rowLow + start, rowHigh + start, low1 + from, high1 + from, stride);
     }
   }
 }
