@@ -19,6 +19,7 @@
 #include "bluenoise_sampler_choices.h"
 #include "bluenoise_volume.h"
 #include "vtkBlueNoiseSpectrum.h"
+#include "vtkBlueNoiseThreads.h"
 #include "vtkErrorDiffusionParameterTable.h"
 #include "vtkErrorDiffusionSampler.h"
 
@@ -112,7 +113,9 @@ const char* const Footer =
   "millimetres) unless --voxel-space; other formats in their origin and spacing.\n"
   "Streaming: raw MetaImage, raw NRRD and VTI with raw appended data are read in\n"
   "z-slabs of about --slab-size MiB, so memory is one slab plus the points; NIfTI,\n"
-  "compressed and ASCII files are read whole.\n"
+  "compressed and ASCII files are read whole. A volume of several z-parts (64\n"
+  "layers and 2^22 voxels at least, sampled side by side) gets slabs of one part per\n"
+  "thread at least (VTK_SMP_MAX_THREADS caps the threads, hence the slabs).\n"
   "The pictures need OpenGL through an X display: without DISPLAY run the program\n"
   "under xvfb-run -a (scripts/main.sh does), or pass --no-pictures.\n"
   "Every failure exits with status 1 (2 for a bad option) and a message.\n"
@@ -391,7 +394,6 @@ bool Sample(const bluenoise::Volume& volume, const Settings& s, const std::strin
     run.Slabs = static_cast<int>(std::min<double>(
       std::min(layers, 65536), std::max(1.0, std::ceil(bytes / (s.SlabMegabytes * 1048576.0)))));
     sampler->SetInputConnection(volume.Reader->GetOutputPort());
-    sampler->SetNumberOfSlabs(run.Slabs);
   }
   else
   {
@@ -405,6 +407,20 @@ bool Sample(const bluenoise::Volume& volume, const Settings& s, const std::strin
   sampler->SetDensityMappingToScalarRange();
   sampler->SetSeed(s.Seed);
   SetMethodAndParameters(sampler, s.Method, s.Parameters);
+  if (volume.Streamable())
+  {
+    // Where the volume has several z-parts, a slab of one per thread at
+    // least: the threads sample a slab's parts side by side. (A volume of
+    // one part is scanned beside its relaxation whatever its slabs.)
+    const int layers = volume.WholeExtent[5] - volume.WholeExtent[4] + 1;
+    const int parts = sampler->GetNumberOfPartsFor(layers, volume.Voxels / layers);
+    if (parts > 1)
+    {
+      const int threads = std::min(parts, vtkBlueNoiseThreads::Available());
+      run.Slabs = std::max(1, std::min(run.Slabs, parts / threads));
+    }
+    sampler->SetNumberOfSlabs(run.Slabs);
+  }
   if (s.Scale >= 0.0)
   {
     sampler->UseNumberOfPointsOff();

@@ -720,14 +720,8 @@ void vtkErrorDiffusionSampler::PlanRun(const int whole[6], int piece, int pieces
 void vtkErrorDiffusionSampler::PlanParts(bool atOnce)
 {
   vtkInternals& run = *this->Internals;
-  const vtkIdType layers = run.SampledLayers();
-  vtkIdType count = 1;
-  if (!atOnce && run.LayerSize() > 0)
-  {
-    count = std::max<vtkIdType>(1,
-      std::min(layers / this->PartLayers, layers * run.LayerSize() / this->PartVoxels));
-  }
-  const auto ranges = SplitLayers(run.Sampled[4], run.Sampled[5], static_cast<int>(count));
+  const int count = atOnce ? 1 : this->GetNumberOfPartsFor(run.SampledLayers(), run.LayerSize());
+  const auto ranges = SplitLayers(run.Sampled[4], run.Sampled[5], count);
   run.Parts.resize(std::max<size_t>(1, ranges.size()));
   for (size_t p = 0; p < run.Parts.size(); ++p)
   {
@@ -742,6 +736,19 @@ void vtkErrorDiffusionSampler::PlanParts(bool atOnce)
     part.ScanFirst =
       p == 0 ? run.ScanFirst : std::max(run.Whole[4], part.First - this->OverlapLayers);
   }
+}
+
+//------------------------------------------------------------------------------
+int vtkErrorDiffusionSampler::GetNumberOfPartsFor(vtkIdType layers, vtkIdType layerVoxels) const
+{
+  if (IsWholeVolumeMethod(this->Method) || layers <= 0 || layerVoxels <= 0)
+  {
+    return 1;
+  }
+  // Through double: layers times voxels may pass what vtkIdType holds.
+  const double byVoxels = static_cast<double>(layers) * layerVoxels / this->PartVoxels;
+  const double count = std::min(static_cast<double>(layers / this->PartLayers), std::floor(byVoxels));
+  return static_cast<int>(std::max(1.0, std::min(count, 65536.0)));
 }
 
 //------------------------------------------------------------------------------

@@ -432,6 +432,15 @@ public:
   void GetPartRange(int i, int range[3]);
   ///@}
 
+  /**
+   * How many z-parts a volume of `layers` layers of `layerVoxels` voxels
+   * each is sampled in, by the current Method, PartLayers and PartVoxels (1
+   * for the whole-volume methods). The threads sample the parts of one slab
+   * side by side, so a caller that streams a volume (NumberOfSlabs) keeps
+   * them busy with slabs of at least as many parts as threads.
+   */
+  int GetNumberOfPartsFor(vtkIdType layers, vtkIdType layerVoxels) const;
+
   /// Output port 1: the mask image.
   vtkImageData* GetMaskOutput();
 

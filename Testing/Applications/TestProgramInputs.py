@@ -140,11 +140,12 @@ class Context:
     def path(self, name):
         return os.path.join(self.work, name)
 
-    def run(self, program, *arguments, timeout=20):
+    def run(self, program, *arguments, timeout=20, environment=None):
         command = [getattr(self.args, program)] + [str(a) for a in arguments]
-        print('running:', ' '.join(command))
+        print('running:', ' '.join(command), environment or '')
         env = dict(os.environ)
         env.pop('DISPLAY', None)
+        env.update(environment or {})
         try:
             p = subprocess.run(command, cwd=self.work, capture_output=True, text=True,
                                timeout=timeout, env=env)
@@ -713,6 +714,30 @@ def streamed_equals_whole(ctx):
         check(slabs > 4, '%d slabs' % slabs)
         streamed = read_csv(os.path.join(ctx.out, 'streamed.csv'))[1]
         check(key(streamed) == key(whole), 'the points streamed from %s differ' % volume)
+
+
+@case
+def slabs_hold_a_part_per_thread(ctx):
+    # 256 layers of 256^2 voxels: four z-parts (64 layers and 2^22 voxels
+    # each). However small --slab-size, the threads get a slab of one part
+    # each to sample side by side: 4 slabs on one thread, 2 on two; the
+    # points are those of the volume read whole.
+    dims = (256, 256, 256)
+    write(ctx.path('v.raw'), bytes((z % 7) * 9 + 3 for z in range(256)
+                                   for _ in range(256 * 256)))
+    volume = metaimage(ctx.path('v.mhd'), dims, 'v.raw')
+    points = {}
+    for threads, slabs, size in ((1, 4, 0.002), (2, 2, 0.002), (2, 1, 1.0e6)):
+        name = 'threads%d-slabs%d.csv' % (threads, slabs)
+        p = ctx.sample(volume, '--samples', name, '--points', 20000, '--slab-size', size,
+                       environment={'VTK_SMP_MAX_THREADS': str(threads)}, timeout=120)
+        check(p.returncode == 0 and 'streamed in ' in p.stdout, '%s was not streamed' % volume)
+        got = int(p.stdout.split('streamed in ')[1].split()[0])
+        check(got == slabs, '%d slabs on %d threads, expected %d' % (got, threads, slabs))
+        points[name] = sorted(tuple(r[:3]) for r in read_csv(os.path.join(ctx.out, name))[1])
+    counts = [len(v) for v in points.values()]
+    check(min(counts) > 19000 and all(v == points[name] for v in points.values()),
+          'the slabs change the points (%s)' % counts)
 
 
 @case

@@ -369,6 +369,32 @@ int main()
     }
   }
 
+  // The parts a caller asks about before an execution are those it plans:
+  // by layers (10 here), by voxels (with PartVoxels of 8 layers' worth, 4
+  // by layers; with one of 5 layers' worth and more, 2), and one for the
+  // whole-volume methods. The product of layers and voxels may exceed what
+  // vtkIdType holds.
+  {
+    auto sampler = inParts();
+    const int planned = sampler->GetNumberOfPartsFor(NZ, NX * NY);
+    sampler->Update();
+    Check(planned == 10 && sampler->GetNumberOfParts() == planned,
+      "parts planned and parts made: " + Str(planned) + ", " + Str(sampler->GetNumberOfParts()));
+    sampler->SetPartVoxels(vtkIdType(80) * NX * NY);
+    Check(sampler->GetNumberOfPartsFor(NZ, NX * NY) == 4, "parts by PartVoxels");
+    sampler->SetPartLayers(150);
+    sampler->SetPartVoxels(vtkIdType(5) * NX * NY);
+    Check(sampler->GetNumberOfPartsFor(NZ, NX * NY) == 2, "parts by PartLayers");
+    sampler->SetPartVoxels(vtkIdType(1) << 62);
+    sampler->SetPartLayers(2);
+    Check(sampler->GetNumberOfPartsFor(vtkIdType(1) << 33, vtkIdType(1) << 33) == 16,
+      "parts of a volume of more voxels than vtkIdType holds");
+    sampler->SetMethod(vtkErrorDiffusionSampler::METHOD_POISSON_DISK);
+    Check(sampler->GetNumberOfPartsFor(NZ, NX * NY) == 1 &&
+        sampler->GetNumberOfPartsFor(0, NX * NY) == 1,
+      "one part for a whole-volume method and for no layers");
+  }
+
   // An abort between chunks: an empty output, and the next update samples.
   {
     auto sampler = inParts();
