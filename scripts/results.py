@@ -386,19 +386,31 @@ def section_parts(opts, scratch):
         'layer, to 0 at its surface), densities value / 255 x g, whose middle parts hold',
         'most of the work. Part layers: *Part Layers* (default 64).',
         '']
-    rows = []
+    rows, streamed = [], []
     order = lambda kv: tuple(named_args(kv[0])[1].get(k, 0) for k in ('ball', 'L', 'g255', 'layers'))
     for key, rs in sorted(runs.items(), key=lambda kv: order(kv) + (-named_args(kv[0])[1]['method'],)):
         _, a = named_args(key)
         b = rs[0]
-        rows.append(['default' if a['method'] == 2 else 'paper\'s',
-                     '%s %d^3' % ('graded ball' if a.get('ball') else 'cube', a['L']), g_label(a['g255']),
-                     '%d' % (a.get('layers') or 64), '%d' % b['parts'], '%.2f' % b['overlap'],
-                     '%.1f' % b['one_part_s']] +
+        case = ['default' if a['method'] == 2 else 'paper\'s',
+                '%s %d^3' % ('graded ball' if a.get('ball') else 'cube', a['L']), g_label(a['g255']),
+                '%d' % (a.get('layers') or 64)]
+        rows.append(case + ['%d' % b['parts'], '%.2f' % b['overlap'], '%.1f' % b['one_part_s']] +
                     ['%.2f' % b['x_%d' % n] for n in (2, 4, 8, 16)])
+        streamed.append(case + ['%d' % max(1, int(b['parts']) // min(int(b['parts']), n))
+                                for n in (2, 4, 8, 16)] +
+                        ['%.2f' % b['xs_%d' % n] for n in (2, 4, 8, 16)])
     out += table(['method', 'volume', 'g', 'part layers', 'parts', 'layers scanned / layers',
                   'one part, one thread: s', 'x_2', 'x_4', 'x_8', 'x_16'], rows,
                  ['---'] * 3 + ['---:'] * 8)
+    out += ['Streamed as `bluenoise-sample` streams a volume of several parts on N threads:',
+            'in max(1, parts / N) z-slabs one after the other (slabs of a part per thread at',
+            'least), the parts side by side within each slab only; xs_N = the same one-part time',
+            '/ the replayed wall time of the slabs. Where the work sits in a few parts (the ball),',
+            'a slab waits for its densest part, and a larger `--slab-size` (more parts a slab) or',
+            'the volume read whole balances the threads better.', '']
+    out += table(['method', 'volume', 'g', 'part layers', 'slabs, N = 2', 'N = 4', 'N = 8',
+                  'N = 16', 'xs_2', 'xs_4', 'xs_8', 'xs_16'], streamed,
+                 ['---'] * 3 + ['---:'] * 9)
     return out
 
 
