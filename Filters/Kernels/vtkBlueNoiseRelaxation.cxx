@@ -124,6 +124,35 @@ void LowerAndHigher(unsigned char* __restrict low, unsigned char* __restrict hig
   }
 }
 
+// Four floats added and multiplied lane by lane, each lane rounded as a
+// float would be (with SSE2 where there is, else a loop).
+struct Lanes4
+{
+#if defined(__SSE2__)
+  __m128 V;
+  static Lanes4 Zero() { return { _mm_setzero_ps() }; }
+  static Lanes4 Load(const float* p) { return { _mm_loadu_ps(p) }; }
+  static Lanes4 All(float x) { return { _mm_set1_ps(x) }; }
+  Lanes4 operator+(const Lanes4& o) const { return { _mm_add_ps(this->V, o.V) }; }
+  Lanes4 operator*(const Lanes4& o) const { return { _mm_mul_ps(this->V, o.V) }; }
+  void Store(float* p) const { _mm_storeu_ps(p, this->V); }
+#else
+  float V[4];
+  static Lanes4 Zero() { return { { 0.0f, 0.0f, 0.0f, 0.0f } }; }
+  static Lanes4 Load(const float* p) { return { { p[0], p[1], p[2], p[3] } }; }
+  static Lanes4 All(float x) { return { { x, x, x, x } }; }
+  Lanes4 operator+(const Lanes4& o) const
+  {
+    return { { V[0] + o.V[0], V[1] + o.V[1], V[2] + o.V[2], V[3] + o.V[3] } };
+  }
+  Lanes4 operator*(const Lanes4& o) const
+  {
+    return { { V[0] * o.V[0], V[1] * o.V[1], V[2] * o.V[2], V[3] * o.V[3] } };
+  }
+  void Store(float* p) const { std::copy(this->V, this->V + 4, p); }
+#endif
+};
+
 inline bool Relaxable(float g)
 {
   return g > 0.0f && g <= vtkBlueNoiseRelaxation::MaximumDensity;
@@ -957,56 +986,54 @@ void vtkBlueNoiseRelaxation::Energies(float energy[27]) const
   // of no neighbor, is carried along for four lanes at a time).
   const float* w = this->RootCache[this->Current].Weights + MaximumRadius + 1;
   const std::uint64_t keep = ((std::uint64_t(1) << (2 * reach + 1)) - 1) << (32 - reach);
-  float sums[3][3][4] = {}; // by dz + 1, dy + 1, dx + 1
+  Lanes4 sums[3][3]; // by dz + 1, dy + 1; lanes by dx + 1
+  std::fill(&sums[0][0], &sums[0][0] + 9, Lanes4::Zero());
   for (int dz = -reach; dz <= reach; ++dz)
   {
+    // The rows of the layer with samples within reach, found without a
+    // branch per row (most rows have none, and which ones is not
+    // predictable), then visited in order.
     const std::uint64_t* rows = this->Window + (dz + Reach) * Span + Reach;
-    float layer[3][4] = {}; // over the layer's rows, by dy + 1, dx + 1
-    bool any = false;
+    std::uint32_t full = 0; // bit dy + reach
     for (int dy = -reach; dy <= reach; ++dy)
     {
-      std::uint64_t bits = rows[dy] & keep;
-      if (!bits)
+      full |= static_cast<std::uint32_t>((rows[dy] & keep) != 0) << (dy + reach);
+    }
+    if (!full)
+    {
+      continue;
+    }
+    Lanes4 layer[3] = { Lanes4::Zero(), Lanes4::Zero(), Lanes4::Zero() }; // by dy + 1
+    for (; full; full &= full - 1)
+    {
+      const int dy = __builtin_ctz(full) - reach;
+      Lanes4 row = Lanes4::Zero(); // over the row's samples
+      for (std::uint64_t bits = rows[dy] & keep; bits; bits &= bits - 1)
       {
-        continue;
-      }
-      any = true;
-      float row[4] = {}; // over the row's samples
-      for (; bits; bits &= bits - 1)
-      {
-        const float* from = w - (__builtin_ctzll(bits) - 32) - 1;
-        for (int k = 0; k < 4; ++k)
-        {
-          row[k] += from[k];
-        }
+        row = row + Lanes4::Load(w - (__builtin_ctzll(bits) - 32) - 1);
       }
       for (int ey = 0; ey < 3; ++ey)
       {
-        const float wy = w[dy - ey + 1];
-        for (int k = 0; k < 4; ++k)
-        {
-          layer[ey][k] += wy * row[k];
-        }
+        layer[ey] = layer[ey] + Lanes4::All(w[dy - ey + 1]) * row;
       }
     }
-    if (any)
+    for (int ez = 0; ez < 3; ++ez)
     {
-      for (int ez = 0; ez < 3; ++ez)
+      const Lanes4 wz = Lanes4::All(w[dz - ez + 1]);
+      for (int ey = 0; ey < 3; ++ey)
       {
-        const float wz = w[dz - ez + 1];
-        for (int ey = 0; ey < 3; ++ey)
-        {
-          for (int k = 0; k < 4; ++k)
-          {
-            sums[ez][ey][k] += wz * layer[ey][k];
-          }
-        }
+        sums[ez][ey] = sums[ez][ey] + wz * layer[ey];
       }
     }
   }
-  for (int k = 0; k < 27; ++k)
+  for (int ez = 0; ez < 3; ++ez)
   {
-    energy[k] = sums[k / 9][k / 3 % 3][k % 3];
+    for (int ey = 0; ey < 3; ++ey)
+    {
+      float lanes[4];
+      sums[ez][ey].Store(lanes);
+      std::copy(lanes, lanes + 3, energy + 9 * ez + 3 * ey);
+    }
   }
 }
 
