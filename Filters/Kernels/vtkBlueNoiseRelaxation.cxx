@@ -30,6 +30,10 @@ constexpr int PlaneCount = vtkBlueNoiseRelaxation::MaximumRadius + 3;
 // without a test per row.
 constexpr int PadRows = vtkBlueNoiseRelaxation::MaximumRadius + 1;
 
+// Nearest visits every shell where there are at most this many (from about
+// 4/255 up), the nearest first and no further than it must where more.
+constexpr size_t EveryShell = 12;
+
 // SplitMix64's finalizer over the seed and a voxel.
 std::uint64_t Hash(std::uint64_t seed, int x, int y, int z)
 {
@@ -674,30 +678,38 @@ void vtkBlueNoiseRelaxation::KeepSimilar(const std::vector<RowRun>& runs, int x,
 //------------------------------------------------------------------------------
 // The squared distance from the voxel at offset (fx, fy, fz) of the window's
 // center to the nearest sample in the window within Radius along each axis,
-// or Cap when none is nearer; as soon as one at `enough` or nearer is found,
-// that one. Shells of rows are visited nearest first, and no further once they
-// cannot hold anything nearer than the best so far. The four rows of a shell
+// or Cap when none is nearer; where there are many shells of rows (below),
+// as soon as one at `enough` or nearer is found, that one (any answer of
+// `enough` or less means the same to the callers). The four rows of a shell
 // are at the same distance: the nearest sample in any of them is the nearest
 // in their union, the nearer of its first set bits on either side of the
-// voxel (a sentinel bit at Radius + 1 stands for none).
+// voxel (a sentinel bit at Radius + 1 stands for none). Few shells (at the
+// densities that cost most) are all visited, as a stop after one or another
+// is a branch no predictor learns; many are visited nearest first, and no
+// further once they cannot hold anything nearer than the best so far.
 int vtkBlueNoiseRelaxation::Nearest(int fx, int fy, int fz, int enough) const
 {
   const int center = 32 + fx;
   const std::uint64_t right = std::uint64_t(1) << (this->Radius + 1);
   const std::uint64_t left = std::uint64_t(1) << (62 - this->Radius);
   const std::uint64_t* window = this->Window + (fz + Reach) * Span + fy + Reach;
-  int best = this->Cap;
-  for (const Shell& shell : this->CurrentRows().Shells)
-  {
-    if (shell.Squared >= best || best <= enough)
-    {
-      break;
-    }
+  const auto distance = [&](const Shell& shell) {
     const int* cell = shell.Cells;
     const std::uint64_t bits = window[cell[0]] | window[cell[1]] | window[cell[2]] | window[cell[3]];
     const int dx = std::min(
       __builtin_ctzll((bits >> center) | right), __builtin_clzll((bits << (63 - center)) | left));
-    best = std::min(best, dx * dx + shell.Squared);
+    return dx * dx + shell.Squared;
+  };
+  int best = this->Cap;
+  const std::vector<Shell>& shells = this->CurrentRows().Shells;
+  const bool every = shells.size() <= EveryShell;
+  for (const Shell& shell : shells)
+  {
+    if (!every && (shell.Squared >= best || best <= enough))
+    {
+      break;
+    }
+    best = std::min(best, distance(shell));
   }
   return best;
 }

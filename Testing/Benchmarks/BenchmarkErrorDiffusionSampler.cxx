@@ -440,7 +440,7 @@ BENCHMARK(BM_Kernel)
   ->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_Relaxation)
   ->ArgNames({ "L", "g255", "rule" })
-  ->ArgsProduct({ { 256 }, { 8, 32, 48 }, { 0 } })
+  ->ArgsProduct({ { 256 }, { 1, 4, 8, 32, 48 }, { 0 } })
   ->Args({ 512, 8, 0 })
   ->ArgsProduct({ { 256 }, { 8, 32 }, { 1 } })
   ->ComputeStatistics("min", Fastest)
