@@ -3,7 +3,8 @@
 # SPDX-License-Identifier: BSD-3-Clause
 # Installs what is needed, builds and runs the whole test suite:
 #   1. against the host's ParaView SDK (module, plugin, Python, all tests);
-#   2. VTK-only (no ParaView plugin) against ParaView's VTK through VTK_DIR;
+#   2. VTK-only (no ParaView plugin) against ParaView's VTK through VTK_DIR,
+#      with the plain code paths of processors without SSE2 (BLUENOISE_SSE2=OFF);
 #   3. VTK-only against a real VTK 9.1 (Debian 12's, unpacked into _build/;
 #      on a Debian 12 host only);
 #   4. the sanitizer builds (scripts/sanitize.sh): clang ASan+UBSan with the whole
@@ -81,7 +82,8 @@ run_sdk() { # release: waits for its chroot, then builds and tests in it
 }
 
 stage paraview run_suite paraview -DParaView_DIR="$paraview_dir"
-stage vtk-only run_suite vtk-only -DBLUENOISE_VTK_ONLY=ON -DVTK_DIR="$paraview_dir/vtk"
+stage vtk-only run_suite vtk-only -DBLUENOISE_VTK_ONLY=ON -DBLUENOISE_SSE2=OFF \
+  -DVTK_DIR="$paraview_dir/vtk"
 if [ "$host" = bookworm ]; then
   stage vtk-9.1 run_vtk91 # Debian 12's packages
 fi

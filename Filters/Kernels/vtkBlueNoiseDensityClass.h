@@ -20,12 +20,11 @@
 #ifndef vtkBlueNoiseDensityClass_h
 #define vtkBlueNoiseDensityClass_h
 
+#include "vtkBlueNoiseSSE2.h"
+
 #include <cstddef>
 #include <cstdint>
 #include <cstring>
-#if defined(__SSE2__)
-#include <emmintrin.h>
-#endif
 
 class vtkBlueNoiseDensityClass
 {
@@ -60,7 +59,7 @@ public:
   static void OfEach(const float* g, size_t n, unsigned char* classes)
   {
     size_t i = 0;
-#if defined(__SSE2__)
+#if BLUENOISE_SSE2
     const __m128i one = _mm_set1_epi32(1);
     const __m128i none = _mm_set1_epi32(-1);
     const __m128i infinity = _mm_set1_epi32(0x7F800000);

@@ -2,14 +2,11 @@
 // SPDX-License-Identifier: BSD-3-Clause
 #include "vtkBlueNoiseRelaxation.h"
 #include "vtkBlueNoiseDensityClass.h"
+#include "vtkBlueNoiseSSE2.h"
 
 #include <algorithm>
 #include <cmath>
 #include <cstring>
-
-#if defined(__SSE2__)
-#include <emmintrin.h>
-#endif
 
 namespace
 {
@@ -75,7 +72,7 @@ std::uint64_t PackBits(const unsigned char* bytes, int n)
 std::uint64_t AlikeBits(const unsigned char* classes, int cls, int n)
 {
   std::uint64_t alike = 0;
-#if defined(__SSE2__)
+#if BLUENOISE_SSE2
   const __m128i c = _mm_set1_epi8(static_cast<char>(cls));
   const __m128i most = _mm_set1_epi8(static_cast<char>(vtkBlueNoiseDensityClass::SimilarClasses));
   for (int i = 0; i < 16 * n; i += 16)
@@ -132,7 +129,7 @@ void LowerAndHigher(unsigned char* __restrict low, unsigned char* __restrict hig
 // float would be (with SSE2 where there is, else a loop).
 struct Lanes4
 {
-#if defined(__SSE2__)
+#if BLUENOISE_SSE2
   __m128 V;
   static Lanes4 Zero() { return { _mm_setzero_ps() }; }
   static Lanes4 Load(const float* p) { return { _mm_loadu_ps(p) }; }
@@ -168,7 +165,7 @@ inline bool Relaxable(float g)
 bool AnyRelaxable(const float* g, size_t n)
 {
   size_t i = 0;
-#if defined(__SSE2__)
+#if BLUENOISE_SSE2
   const __m128 zero = _mm_setzero_ps();
   const __m128 most = _mm_set1_ps(vtkBlueNoiseRelaxation::MaximumDensity);
   for (; i + 16 <= n; i += 16)

@@ -2,14 +2,11 @@
 // SPDX-License-Identifier: BSD-3-Clause
 #include "vtkErrorDiffusionScan.h"
 #include "vtkBlueNoiseDensityClass.h"
+#include "vtkBlueNoiseSSE2.h"
 
 #include <algorithm>
 #include <cmath>
 #include <cstring>
-
-#if defined(__SSE2__)
-#include <emmintrin.h>
-#endif
 
 namespace
 {
@@ -540,7 +537,7 @@ vtkErrorDiffusionScan::LayerRange vtkErrorDiffusionScan::RangeOf(const float* g,
 {
   LayerRange range;
   size_t i = 0;
-#if defined(__SSE2__)
+#if BLUENOISE_SSE2
   // Four at a time (the compiler does not vectorize the comparisons by
   // itself: they may trap); the counts per lane in blocks that fit an int.
   const __m128 zero = _mm_setzero_ps();

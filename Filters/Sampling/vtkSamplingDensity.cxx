@@ -3,6 +3,7 @@
 #include "vtkSamplingDensity.h"
 
 #include "vtkArrayDispatch.h"
+#include "vtkBlueNoiseSSE2.h"
 #include "vtkBlueNoiseThreads.h"
 #include "vtkDataArrayRange.h"
 #include "vtkDataSetAttributes.h"
@@ -19,9 +20,6 @@
 #include <type_traits>
 #include <vector>
 
-#if defined(__SSE2__)
-#include <emmintrin.h>
-#endif
 
 namespace
 {
@@ -46,7 +44,7 @@ struct DensityMap
     return g >= 1.0 ? 1.0f : static_cast<float>(g);
   }
 
-#if defined(__SSE2__)
+#if BLUENOISE_SSE2
   // Two values at once, with the same results: max passes its second
   // operand (0) on NaN and on equal zeros, min passes 1 unless g < 1. (The
   // compiler does not vectorize the branches above by itself: the
@@ -478,7 +476,7 @@ struct FillWorker
     const vtkIdType n = end - begin;
     double lanes[4] = { 0.0, 0.0, 0.0, 0.0 };
     vtkIdType i = 0;
-#if defined(__SSE2__)
+#if BLUENOISE_SSE2
     const auto pair = [&](vtkIdType k) {
       return _mm_cvtpd_ps(density(
         _mm_set_pd(static_cast<double>(values[k + 1]), static_cast<double>(values[k]))));
