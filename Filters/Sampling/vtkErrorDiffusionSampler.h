@@ -173,8 +173,9 @@ public:
    *   one sweep of one-voxel moves that spreads the samples closer than the
    *   blue-noise spacing (vtkBlueNoiseRelaxation, densities up to 1/4): less
    *   low-frequency energy than a Poisson-disk set, the same count, in about
-   *   1.2 to 1.5 times the time of METHOD_ERROR_DIFFUSION (up to 2.5 times
-   *   around g = 1/5, where every fifth voxel is a sample to check);
+   *   twice the time of METHOD_ERROR_DIFFUSION (most around g = 1/8, where
+   *   the samples to check are many and most are near another; nothing more
+   *   above 1/4; Documentation/Results.md has the figures);
    * - METHOD_ENERGY_RELAXED_ERROR_DIFFUSION: the 3D error diffusion, then
    *   two passes that move each sample (densities up to 1/4) by a voxel, to
    *   the neighbor of the 26 where its Gaussian energy (the repulsion of the
