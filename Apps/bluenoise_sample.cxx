@@ -380,19 +380,34 @@ bool WriteMetricsCSV(vtkTable* table, int seed, const std::string& method,
   return static_cast<bool>(out);
 }
 
+// The z-slabs a streamed volume is sampled in (the sampler's method set):
+// about --slab-size MiB each, and, where the volume has several z-parts, one
+// part per thread at least, as the threads sample a slab's parts side by
+// side. (A volume of one part is scanned beside its relaxation whatever its
+// slabs.)
+int SlabsOf(const bluenoise::Volume& volume, const Settings& s, vtkErrorDiffusionSampler* sampler)
+{
+  const double bytes = static_cast<double>(volume.Voxels) * volume.BytesPerVoxel;
+  const int layers = volume.WholeExtent[5] - volume.WholeExtent[4] + 1;
+  int slabs = static_cast<int>(std::min<double>(
+    std::min(layers, 65536), std::max(1.0, std::ceil(bytes / (s.SlabMegabytes * 1048576.0)))));
+  const int parts = sampler->GetNumberOfPartsFor(layers, volume.Voxels / layers);
+  if (parts > 1)
+  {
+    const int threads = std::min(parts, vtkBlueNoiseThreads::Available());
+    slabs = std::max(1, std::min(slabs, parts / threads));
+  }
+  return slabs;
+}
 
-// The sampler on the volume: read whole, or streamed in z-slabs of about
-// --slab-size MiB from a reader that reads sub-extents.
+// The sampler on the volume: read whole, or streamed in z-slabs (SlabsOf)
+// from a reader that reads sub-extents.
 bool Sample(const bluenoise::Volume& volume, const Settings& s, const std::string& arrayName,
   Run& run, std::string& error)
 {
   vtkNew<vtkErrorDiffusionSampler> sampler;
   if (volume.Streamable())
   {
-    const double bytes = static_cast<double>(volume.Voxels) * volume.BytesPerVoxel;
-    const int layers = volume.WholeExtent[5] - volume.WholeExtent[4] + 1;
-    run.Slabs = static_cast<int>(std::min<double>(
-      std::min(layers, 65536), std::max(1.0, std::ceil(bytes / (s.SlabMegabytes * 1048576.0)))));
     sampler->SetInputConnection(volume.Reader->GetOutputPort());
   }
   else
@@ -409,16 +424,7 @@ bool Sample(const bluenoise::Volume& volume, const Settings& s, const std::strin
   SetMethodAndParameters(sampler, s.Method, s.Parameters);
   if (volume.Streamable())
   {
-    // Where the volume has several z-parts, a slab of one per thread at
-    // least: the threads sample a slab's parts side by side. (A volume of
-    // one part is scanned beside its relaxation whatever its slabs.)
-    const int layers = volume.WholeExtent[5] - volume.WholeExtent[4] + 1;
-    const int parts = sampler->GetNumberOfPartsFor(layers, volume.Voxels / layers);
-    if (parts > 1)
-    {
-      const int threads = std::min(parts, vtkBlueNoiseThreads::Available());
-      run.Slabs = std::max(1, std::min(run.Slabs, parts / threads));
-    }
+    run.Slabs = SlabsOf(volume, s, sampler);
     sampler->SetNumberOfSlabs(run.Slabs);
   }
   if (s.Scale >= 0.0)

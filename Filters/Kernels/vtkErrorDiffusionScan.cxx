@@ -854,6 +854,30 @@ void vtkErrorDiffusionScan::ScanRun(const float* density, unsigned char* mask, v
 }
 
 //------------------------------------------------------------------------------
+// The voxels' paths (FindInterior) of a layer with inactive voxels or
+// density steps, where the fast path still serves the voxels whose
+// neighborhood is active and of similar densities (the bulk of any real
+// volume's support), with the layer's mask cleared; nullptr for a layer all
+// active and alike (or the last one).
+const unsigned char* vtkErrorDiffusionScan::LayerPaths(
+  const float* density, const float* next, unsigned char* mask, bool allActive, bool similar)
+{
+  const unsigned char* interior =
+    allActive || !next ? nullptr : this->FindInterior(density, next, !similar);
+  if (interior)
+  {
+    // In memory order: the scan skips the voxels of no density, whose mask
+    // is 0, and along a column each store would be to a line of its own.
+    std::fill(mask, mask + static_cast<size_t>(this->NX) * this->NY, 0);
+  }
+  if (!interior || similar)
+  {
+    this->ClassedLayer = nullptr; // the classes kept are of no layer to come
+  }
+  return interior;
+}
+
+//------------------------------------------------------------------------------
 // The scan of one layer. Record keeps what each voxel received (for
 // MeasureReceivedError) and costs a store per voxel, so it is a template
 // flag. Runs of voxels away from the faces of a layer whose voxels and
@@ -868,21 +892,7 @@ vtkIdType vtkErrorDiffusionScan::ScanLayer(
   Reservoir reservoir;
   bool similar = true;
   const bool allActive = this->TestLayers(density, next, reservoir.Remaining, similar);
-  // Where there are inactive voxels or density steps, the fast path still
-  // serves the voxels whose neighborhood is active and of similar densities:
-  // the bulk of any real volume's support.
-  const unsigned char* interior =
-    allActive || !next ? nullptr : this->FindInterior(density, next, !similar);
-  if (interior)
-  {
-    // In memory order: the scan skips the voxels of no density, whose mask
-    // is 0, and along a column each store would be to a line of its own.
-    std::fill(mask, mask + static_cast<size_t>(this->NX) * this->NY, 0);
-  }
-  if (!interior || similar)
-  {
-    this->ClassedLayer = nullptr; // the classes kept are of no layer to come
-  }
+  const unsigned char* interior = this->LayerPaths(density, next, mask, allActive, similar);
   const LayerScan s = GetLayerScan(this->NX, this->NY, layer);
   const LayerScan es = GetLayerScan(this->NX, this->NY, layer, this->Pitch);
   this->SeedLayer(layer);

@@ -325,6 +325,8 @@ private:
   const float* ClassedLayer = nullptr;                // the densities ClassNext is of
   const unsigned char* FindInterior(const float* density, const float* next, bool steps);
   void ErodeActive(const float* density, const float* next, bool steps);
+  const unsigned char* LayerPaths(
+    const float* density, const float* next, unsigned char* mask, bool allActive, bool similar);
   void KeepSimilarInterior(const float* density, const float* next);
   // The last successor layer tested: how many of its voxels are active, and
   // the lowest and highest of their densities.
