@@ -313,7 +313,10 @@ private:
     double Limit = 0.0;
     int Radius = 1;
     int Cap = 1;
-    float Weights[2 * MaximumRadius + 3] = {};
+    // EnergyWeights', and one more, 0: the energy's rows carry a fourth lane
+    // of no neighbor, which reads one past w(MaximumRadius + 1) at the
+    // widest box.
+    float Weights[2 * MaximumRadius + 4] = {};
   };
   static constexpr int RootCacheBits = 6;
   Roots RootCache[1 << RootCacheBits];
