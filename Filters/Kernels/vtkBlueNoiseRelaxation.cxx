@@ -448,24 +448,17 @@ vtkBlueNoiseRelaxation::RowSet vtkBlueNoiseRelaxation::MakeRows(int radius, int 
 }
 
 //------------------------------------------------------------------------------
-// The rows the current density's rule reads around sample (x, y), into the
-// window, without the sample itself (it is not its own neighbor).
+// Copies the rows the current density's rule reads around sample (x, y)
+// (CurrentRows().Loaded) of the layers in Layers into the window, without
+// the sample itself (it is not its own neighbor): bit k of a row is voxel
+// x - 32 + k (zero outside the volume).
 void vtkBlueNoiseRelaxation::LoadAround(int x, int y)
-{
-  this->Load(this->CurrentRows().Loaded, x, y);
-  this->Window[Reach * Span + Reach] &= ~(std::uint64_t(1) << 32);
-}
-
-//------------------------------------------------------------------------------
-// Copies the `runs` of rows around (x, y) of the layers in Layers into the
-// window: bit k of a row is voxel x - 32 + k (zero outside the volume).
-void vtkBlueNoiseRelaxation::Load(const std::vector<RowRun>& runs, int x, int y)
 {
   const int start = x - 32; // from -32: the word before the first is zero
   const int shift = start & 63;
   const std::ptrdiff_t word = this->RowStart(y) + (start >> 6);
   const std::ptrdiff_t stride = this->WordsPerRow;
-  for (const RowRun& run : runs)
+  for (const RowRun& run : this->CurrentRows().Loaded)
   {
     const std::uint64_t* words = this->Layers[run.DZ + Reach] + word + run.Low * stride;
     std::uint64_t* cell = this->Window + (run.DZ + Reach) * Span + run.Low + Reach;
@@ -476,6 +469,7 @@ void vtkBlueNoiseRelaxation::Load(const std::vector<RowRun>& runs, int x, int y)
       *cell = (words[0] >> shift) | ((words[1] << 1) << (63 - shift));
     }
   }
+  this->Window[Reach * Span + Reach] &= ~(std::uint64_t(1) << 32);
 }
 
 //------------------------------------------------------------------------------

@@ -259,7 +259,6 @@ private:
     std::vector<Shell> Shells;  // the rows within the radius and nearer than the cap, nearest first
   };
   static RowSet MakeRows(int radius, int cap);
-  void Load(const std::vector<RowRun>& runs, int x, int y);
   void LoadAround(int x, int y);
   void Classify(Slot& slot, const float* density);
   bool MixedAround(int x, int y, int cls, int classes) const;

@@ -20,7 +20,6 @@
 #include <type_traits>
 #include <vector>
 
-
 namespace
 {
 constexpr unsigned char NotOwned =
