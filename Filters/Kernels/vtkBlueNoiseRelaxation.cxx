@@ -933,18 +933,33 @@ void vtkBlueNoiseRelaxation::MoveBySpacing(int x, int y, int z, float g)
       return;
     }
   }
-  int order[6];
-  FaceOrder(this->Seed, x, y, z, order);
   // Only to a voxel of nearly the same density: along a density gradient a
   // rule by distance moves samples one way more than the other (with a
   // tolerance of 1/8: 3 % fewer points in the sparse end slab of a ramp).
   int best = current;
   int target = -1;
-  const unsigned blocked = this->BlockedFaces(x, y) | this->CrowdedFaces(std::min(current, 2)) |
-    (this->Whole ? this->BandFaces(x, y) : 0u);
-  for (const int face : order)
+  const unsigned open = ~(this->BlockedFaces(x, y) | this->CrowdedFaces(std::min(current, 2)) |
+                          (this->Whole ? this->BandFaces(x, y) : 0u)) & 0x3Fu;
+  if (!open)
   {
-    if ((blocked >> face) & 1)
+    return; // often so where samples are dense
+  }
+  // The order matters only among two or more open faces: one alone is
+  // asked without drawing it.
+  int order[6];
+  const int faces = (open & (open - 1)) == 0 ? 1 : 6;
+  if (faces == 1)
+  {
+    order[0] = __builtin_ctz(open);
+  }
+  else
+  {
+    FaceOrder(this->Seed, x, y, z, order);
+  }
+  for (int k = 0; k < faces; ++k)
+  {
+    const int face = order[k];
+    if (!((open >> face) & 1))
     {
       continue;
     }
