@@ -377,11 +377,14 @@ def section_parts(opts, scratch):
         'The sampler cuts a volume into z-parts (*Part Layers*, *Part Voxels*) and samples',
         'them side by side, each thread taking the next part when its own is done. x_N =',
         'the time of the whole cube in one part on one thread / the wall time the parts',
-        'would take on N threads: each part\'s own layers and its overlap timed alone on',
-        'one thread (so the overlap\'s extra scan is counted, with its relaxation and',
-        'points) and the filter\'s schedule replayed, the next part going to the first',
-        'thread free. No thread is started: the machine measuring need not have N',
-        'cores. uint8 volumes: constant cubes of density g, a budget of g x voxels; and the',
+        'would take on N threads: each part\'s own layers and its overlap timed alone (so',
+        'the overlap\'s extra scan is counted, with its relaxation and points), on one thread',
+        'and with the worker thread beside it (paired: two threads), and the filter\'s schedule',
+        'replayed: the next part going to the first thread free, in epochs of half a second;',
+        'threads the parts leave idle pair up with the lowest parts held, decided afresh every',
+        'tenth of a second (the filter: at each chunk); the last part left paired. Paired = the',
+        'parts\' time paired / alone. Two threads at most are used: the machine measuring need',
+        'not have N cores. uint8 volumes: constant cubes of density g, a budget of g x voxels; and the',
         'graded ball of `scripts/bench-streaming.sh` (255 at its center, times 0.75 to 1 by',
         'layer, to 0 at its surface), densities value / 255 x g, whose middle parts hold',
         'most of the work. Part layers: *Part Layers* (default 64).',
@@ -394,14 +397,15 @@ def section_parts(opts, scratch):
         case = ['default' if a['method'] == 2 else 'paper\'s',
                 '%s %d^3' % ('graded ball' if a.get('ball') else 'cube', a['L']), g_label(a['g255']),
                 '%d' % (a.get('layers') or 64)]
-        rows.append(case + ['%d' % b['parts'], '%.2f' % b['overlap'], '%.1f' % b['one_part_s']] +
+        rows.append(case + ['%d' % b['parts'], '%.2f' % b['overlap'], '%.1f' % b['one_part_s'],
+                            '%.2f' % b['paired']] +
                     ['%.2f' % b['x_%d' % n] for n in (2, 4, 8, 16)])
         streamed.append(case + ['%d' % max(1, int(b['parts']) // min(int(b['parts']), n))
                                 for n in (2, 4, 8, 16)] +
                         ['%.2f' % b['xs_%d' % n] for n in (2, 4, 8, 16)])
     out += table(['method', 'volume', 'g', 'part layers', 'parts', 'layers scanned / layers',
-                  'one part, one thread: s', 'x_2', 'x_4', 'x_8', 'x_16'], rows,
-                 ['---'] * 3 + ['---:'] * 8)
+                  'one part, one thread: s', 'paired', 'x_2', 'x_4', 'x_8', 'x_16'], rows,
+                 ['---'] * 3 + ['---:'] * 9)
     out += ['Streamed as `bluenoise-sample` streams a volume of several parts on N threads:',
             'in max(1, parts / N) z-slabs one after the other (slabs of a part per thread at',
             'least), the parts side by side within each slab only; xs_N = the same one-part time',

@@ -1176,7 +1176,12 @@ bool vtkErrorDiffusionSampler::ScanSlab(vtkImageData* input, vtkDataArray* array
 // backend may leave out of the epoch's threads) reports progress and honors
 // abort. The last part left, or every part when one thread is allowed, is
 // scanned by the calling thread at once, reporting layer by layer, with the
-// scan on a worker thread beside it as a volume of one part does.
+// scan on a worker thread beside it as a volume of one part does. Threads
+// the epoch's parts leave idle (fewer parts left than threads, or threads
+// done with the parts they could take) pair up with the parts: a chunk
+// started while one is free runs its scan on a worker thread beside the
+// part's thread, and in a longer chunk (the two overlap within a chunk
+// only).
 class vtkErrorDiffusionSampler::vtkInternals::Schedule
 {
 public:
@@ -1201,6 +1206,7 @@ private:
   void Work(Clock::time_point end);
   Share* Take();
   bool ScanChunk(Share& share);
+  bool TakePair(int layers);
   bool ScanRest(Share& share);
   void Finish(Share& share);
   void Fail(const std::string& error);
@@ -1214,6 +1220,8 @@ private:
   bool Diffusion;
   std::vector<Share> Shares;
   int Chunk = 2;           // layers a part scans between two looks at the others
+  static constexpr int PairedChunks = 8; // chunks a paired part scans at once
+  int Threads = 1;         // the threads the module may use
   double ProgressBase = 0; // where progress stood before the step
   double Layers = 0;       // the step's layers to scan, overlaps included
   std::atomic<bool> Stop{ false };
@@ -1222,6 +1230,8 @@ private:
   size_t Started = 0; // shares started, the lowest ones
   size_t Writer = 0;  // the lowest share whose points are not all in the output
   size_t Left = 0;    // shares not done
+  int Working = 0;    // threads in the epoch's Work
+  int Pairs = 0;      // worker threads of chunks paired (ScanChunk)
   vtkIdType Scanned = 0;
   std::vector<Part*> Spares; // parts ended, whose buffers the next part started takes
   std::string Error;
@@ -1257,7 +1267,8 @@ vtkErrorDiffusionSampler::vtkInternals::Schedule::Schedule(
 //------------------------------------------------------------------------------
 bool vtkErrorDiffusionSampler::vtkInternals::Schedule::Scan(int threads)
 {
-  threads = std::max(1, std::min(threads, static_cast<int>(this->Shares.size())));
+  threads = std::max(1, threads);
+  this->Threads = threads;
   // Long enough that a thread's wait for the others' chunks at its end is
   // little beside it, short enough for a progress bar and an abort.
   const auto epoch = std::chrono::milliseconds(500);
@@ -1268,8 +1279,11 @@ bool vtkErrorDiffusionSampler::vtkInternals::Schedule::Scan(int threads)
       this->ScanRest(*this->Take());
       continue;
     }
+    // Counted before they start, so that none takes a thread for a pair
+    // that another is about to use.
+    this->Working = std::min(threads, static_cast<int>(this->Left));
     const Clock::time_point end = Clock::now() + epoch;
-    vtkBlueNoiseThreads::ForEach(threads, [&](int) { this->Work(end); });
+    vtkBlueNoiseThreads::ForEach(this->Working, [&](int) { this->Work(end); });
     this->Run.ProgressDone = this->ProgressBase + this->ProgressPerLayer() * this->Scanned;
     this->Self->UpdateProgress(this->Run.ProgressDone / this->Run.ProgressTotal);
     this->Stop = this->Stop || this->Self->IsAborted();
@@ -1302,6 +1316,15 @@ double vtkErrorDiffusionSampler::vtkInternals::Schedule::ProgressPerLayer() cons
 // one left (it is then left to the next epoch, or to ScanRest).
 void vtkErrorDiffusionSampler::vtkInternals::Schedule::Work(Clock::time_point end)
 {
+  struct Leave // its thread is free for a pair once it leaves
+  {
+    Schedule& Of;
+    ~Leave()
+    {
+      std::lock_guard<std::mutex> lock(this->Of.Mutex);
+      --this->Of.Working;
+    }
+  } leave{ *this };
   while (!this->Stop && Clock::now() < end)
   {
     Share* share = this->Take();
@@ -1387,11 +1410,22 @@ bool vtkErrorDiffusionSampler::vtkInternals::Schedule::ScanChunk(Share& share)
   {
     part.BecomeWriter();
   }
-  const int to = std::min(share.Last, share.Next + this->Chunk - 1);
+  // Paired, longer chunks: the scan and the layers behind it overlap within
+  // a chunk only.
+  const auto last = [&](int chunk) { return std::min(share.Last, share.Next + chunk - 1); };
+  const bool paired = this->TakePair(last(PairedChunks * this->Chunk) - share.Next + 1);
+  const int to = last((paired ? PairedChunks : 1) * this->Chunk);
   const int layers = to - share.Next + 1;
-  part.Runner.SetThreaded(false);
+  part.Runner.SetThreaded(paired);
   SlabScan stages(this->Self, part, this->Input, this->Array, share.Next, to, 0.0);
-  if (!part.Runner.Run(part.Kernel, stages, this->Run.NX(), this->Run.NY(), layers, to < part.Last))
+  const bool done =
+    part.Runner.Run(part.Kernel, stages, this->Run.NX(), this->Run.NY(), layers, to < part.Last);
+  if (paired)
+  {
+    std::lock_guard<std::mutex> lock(this->Mutex);
+    --this->Pairs;
+  }
+  if (!done)
   {
     this->Fail(part.Runner.GetError().empty() ? "a part stopped" : part.Runner.GetError());
     return false;
@@ -1400,6 +1434,19 @@ bool vtkErrorDiffusionSampler::vtkInternals::Schedule::ScanChunk(Share& share)
   std::lock_guard<std::mutex> lock(this->Mutex);
   this->Scanned += layers;
   return !this->Stop;
+}
+
+//------------------------------------------------------------------------------
+// Whether a chunk of `layers` layers gets a worker thread: when one of the
+// threads the module may use is neither in the epoch's Work nor another
+// chunk's worker, and the chunk is worth one (WorkerThreadFor).
+bool vtkErrorDiffusionSampler::vtkInternals::Schedule::TakePair(int layers)
+{
+  std::lock_guard<std::mutex> lock(this->Mutex);
+  const bool paired =
+    this->Working + this->Pairs < this->Threads && this->Self->WorkerThreadFor(layers);
+  this->Pairs += paired ? 1 : 0;
+  return paired;
 }
 
 //------------------------------------------------------------------------------

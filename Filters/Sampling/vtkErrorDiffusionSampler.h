@@ -93,9 +93,15 @@
  * to scan (the slab of a streamed volume, the last part), is scanned on a
  * worker thread while this thread relaxes and builds the points, the densities
  * mapped and the relaxed layers' points built by whichever of the two has time
- * (UseWorkerThread, when more than one thread is allowed). The pass over the
- * values that a point budget or an unset scalar range needs before the scan
- * runs on as many threads as are allowed.
+ * (UseWorkerThread, when more than one thread is allowed). So are parts
+ * side by side with the threads they leave idle (fewer parts left than
+ * threads, or threads done while the others' parts run on): a part's next
+ * chunk of layers started while a thread is idle scans on a worker thread
+ * beside the thread that relaxes it (a volume of 8 parts on 16 threads uses
+ * all 16; the relaxed methods gain most, the paper's method, whose scan is
+ * the longer stage, little). The pass over the values that a point budget
+ * or an unset scalar range needs before the scan runs on as many threads
+ * as are allowed.
  *
  * Time O(voxels); memory besides the input and the output a few layers (per
  * part side by side), and the compacted samples of the parts that wait for
@@ -365,7 +371,9 @@ public:
   ///@{
   /**
    * Run the error-diffusion scan on a worker thread while the calling thread
-   * relaxes and builds the output points from the layers already scanned,
+   * (for parts side by side paired with idle threads, the thread that
+   * holds the part; see the class comment) relaxes and builds the output
+   * points from the layers already scanned,
    * the densities of the layers ahead mapped and the points of relaxed layers
    * built by whichever thread has time (the scan itself is sequential: each
    * voxel depends on the one before). Used when

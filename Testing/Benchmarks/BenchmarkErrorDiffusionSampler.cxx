@@ -247,10 +247,11 @@ void BM_Steps(benchmark::State& state)
   FilterCounters(state, n, plain / best, sampler);
 }
 
-// The fastest of `runs` executions of the filter on one thread (no worker
-// thread), in seconds, the first one untimed; in one part unless `parts`.
-double OneThreadSeconds(vtkImageData* image, double g, int method, bool parts, int runs,
-  vtkErrorDiffusionSampler* plan = nullptr)
+// The fastest of `runs` executions of the filter on one thread, or with its
+// worker thread beside it (`worker`: two threads), in seconds, the first one
+// untimed; in one part unless `parts`.
+double FilterSeconds(vtkImageData* image, double g, int method, bool parts, int runs,
+  vtkErrorDiffusionSampler* plan = nullptr, bool worker = false)
 {
   vtkNew<vtkErrorDiffusionSampler> sampler;
   vtkErrorDiffusionSampler* s = plan ? plan : sampler.Get();
@@ -258,7 +259,7 @@ double OneThreadSeconds(vtkImageData* image, double g, int method, bool parts, i
   s->SetDensityMappingToIdentity();
   s->UseNumberOfPointsOff();
   s->SetDensityScale(g);
-  s->SetUseWorkerThread(false);
+  s->SetUseWorkerThread(worker);
   SetMethod(s, method);
   if (!parts)
   {
@@ -276,19 +277,85 @@ double OneThreadSeconds(vtkImageData* image, double g, int method, bool parts, i
   return best;
 }
 
+// The time of one part's layers: alone on a thread, and with a worker
+// thread beside it (paired).
+struct PartWork
+{
+  double Single;
+  double Paired;
+};
+
+// The wall time of parts (in z order) on `threads` threads as the filter's
+// schedule runs them: in epochs of half a second, each of up to `threads`
+// threads taking the lowest part not done that no thread holds, and the
+// next when that one is done, until the epoch ends (a thread that finds
+// none leaves); threads neither holding a part nor left to the next epoch
+// pair up with the lowest parts held (their scan on a worker thread),
+// decided afresh at each part's end and every tenth of a second (the
+// filter: at each chunk); the last part left paired, at once.
+double Replay(int threads, const std::vector<PartWork>& parts)
+{
+  const double epoch = 0.5, chunk = 0.1;
+  std::vector<double> left(parts.size(), 1.0); // of each part's work
+  const auto notDone = [&] {
+    std::vector<size_t> p;
+    for (size_t i = 0; i < left.size(); ++i)
+    {
+      if (left[i] > 1e-12)
+      {
+        p.push_back(i);
+      }
+    }
+    return p;
+  };
+  double now = 0.0;
+  for (auto rest = notDone(); !rest.empty(); rest = notDone())
+  {
+    if (rest.size() == 1 || threads == 1)
+    {
+      now += left[rest[0]] * (threads > 1 ? parts[rest[0]].Paired : parts[rest[0]].Single);
+      left[rest[0]] = 0.0;
+      continue;
+    }
+    const size_t workers = std::min(static_cast<size_t>(threads), rest.size());
+    const double end = now + epoch;
+    while (now < end && rest.size() > 1)
+    {
+      const size_t held = std::min(workers, rest.size());
+      const size_t pairs = std::min(held, threads - held);
+      const auto seconds = [&](size_t k) {
+        return k < pairs ? parts[rest[k]].Paired : parts[rest[k]].Single;
+      };
+      double step = std::min(end - now, chunk);
+      for (size_t k = 0; k < held; ++k)
+      {
+        step = std::min(step, left[rest[k]] * seconds(k));
+      }
+      for (size_t k = 0; k < held; ++k)
+      {
+        left[rest[k]] = std::max(0.0, left[rest[k]] - step / seconds(k));
+      }
+      now += step;
+      rest = notDone();
+    }
+  }
+  return now;
+}
+
 // The speed-up of the z-parts on N threads, projected from the work of each
-// part measured alone on one thread: each part's scanned layers (its overlap
-// included) sampled as a volume of their own in one part, which also relaxes
-// and emits the overlap (so the projection errs on the slow side). The
-// schedule is replayed as the filter runs it: N threads, each taking the
-// lowest part no thread has taken as soon as its own is done. Speed-up = the
-// whole volume in one part on one thread / the replayed wall time. Counters:
-// parts, overlap (scanned layers / sampled layers) and x_N for N = 2, 4, 8,
-// 16; xs_N the same for the volume streamed as bluenoise-sample streams it
-// on N threads: in max(1, parts / N) z-slabs one after the other (the
-// filter's even split of the layers), the parts' layers in each slab (their
-// overlap's with them) side by side as above. Threads are not used: the
-// machine measuring need not have N cores.
+// part measured alone: each part's scanned layers (its overlap included)
+// sampled as a volume of their own in one part, which also relaxes and
+// emits the overlap (so the projection errs on the slow side), on one
+// thread and with the worker thread beside it. The schedule is replayed as
+// the filter runs it (Replay). Speed-up = the whole volume in one part on
+// one thread / the replayed wall time. Counters: parts, overlap (scanned
+// layers / sampled layers), paired (the parts' time with a worker thread
+// over their time alone) and x_N for N = 2, 4, 8, 16; xs_N the same for the
+// volume streamed as bluenoise-sample streams it on N threads: in max(1,
+// parts / N) z-slabs one after the other (the filter's even split of the
+// layers), the parts' layers in each slab (their overlap's with them) side
+// by side as above. Only two threads are used: the machine measuring need
+// not have N cores.
 // range(0): edge; range(1): g in 1/255; range(2): the Method; range(3): 0 a
 // constant cube of density g, 1 the graded ball (GradedBall) of densities
 // value / 255 x g (g at the center of its densest layers); range(4): the
@@ -310,12 +377,12 @@ void BM_PartsProjection(benchmark::State& state)
     {
       plan->SetPartLayers(static_cast<int>(state.range(4)));
     }
-    OneThreadSeconds(image, g, method, true, 0, plan);
-    const double whole = OneThreadSeconds(image, g, method, false, 2);
+    FilterSeconds(image, g, method, true, 0, plan);
+    const double whole = FilterSeconds(image, g, method, false, 2);
     const int parts = plan->GetNumberOfParts();
     std::vector<std::array<int, 2>> scans(static_cast<size_t>(parts)); // first and last layer
-    std::vector<double> perLayer(static_cast<size_t>(parts));
-    double scanned = 0.0;
+    std::vector<PartWork> perLayer(static_cast<size_t>(parts));
+    double scanned = 0.0, single = 0.0, paired = 0.0;
     for (int p = 0; p < parts; ++p)
     {
       int range[3];
@@ -324,21 +391,23 @@ void BM_PartsProjection(benchmark::State& state)
       const int layers = range[2] - range[0] + 1;
       scanned += layers;
       auto part = volume(range[0], layers);
-      perLayer[p] = OneThreadSeconds(part, g, method, false, 2) / layers;
+      perLayer[p] = { FilterSeconds(part, g, method, false, 2) / layers,
+        FilterSeconds(part, g, method, false, 2, nullptr, true) / layers };
+      single += perLayer[p].Single * layers;
+      paired += perLayer[p].Paired * layers;
     }
-    // The wall time of the parts' layers in [from, to] on `threads` threads,
-    // the next part going to the first thread free.
+    // The wall time of the parts' layers in [from, to] on `threads` threads.
     const auto wallOf = [&](int threads, int from, int to) {
-      std::vector<double> freeAt(static_cast<size_t>(threads), 0.0);
+      std::vector<PartWork> work;
       for (int p = 0; p < parts; ++p)
       {
         const int layers = std::min(to, scans[p][1]) - std::max(from, scans[p][0]) + 1;
         if (layers > 0)
         {
-          *std::min_element(freeAt.begin(), freeAt.end()) += layers * perLayer[p];
+          work.push_back({ layers * perLayer[p].Single, layers * perLayer[p].Paired });
         }
       }
-      return *std::max_element(freeAt.begin(), freeAt.end());
+      return Replay(threads, work);
     };
     for (const int threads : { 2, 4, 8, 16 })
     {
@@ -353,6 +422,7 @@ void BM_PartsProjection(benchmark::State& state)
     }
     state.counters["parts"] = parts;
     state.counters["overlap"] = scanned / n;
+    state.counters["paired"] = paired / single;
     state.counters["one_part_s"] = whole;
   }
 }

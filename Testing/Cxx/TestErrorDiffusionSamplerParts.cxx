@@ -1,8 +1,9 @@
 // SPDX-FileCopyrightText: Copyright (c) 2025-2026 the BlueNoiseSampling contributors
 // SPDX-License-Identifier: BSD-3-Clause
 // The z-parts the scanning methods sample side by side (PartLayers,
-// PartVoxels): the output does not depend on the threads, the slabs or the
-// chunks a part is scanned in; the count stays exact (within max(2,
+// PartVoxels): the output does not depend on the threads (nor on whether a
+// part has a worker thread beside it), the slabs or the chunks a part is
+// scanned in; the count stays exact (within max(2,
 // 0.05 %)); the 16 layers around each seam hold their expected count within
 // 2 %; the mask matches the points and the attributes their voxels (numeric
 // and string arrays); the paper's method and both relaxed ones; progress
@@ -131,20 +132,24 @@ int main()
       " method";
   };
   // The runs on several threads first (see WithThreads).
-  std::map<int, std::array<vtkSmartPointer<vtkPolyData>, 3>> several;
+  // Twice as many threads as parts: each part with a worker thread beside it.
+  const int paired = 2 * NZ / PartLayers;
+  std::map<int, std::array<vtkSmartPointer<vtkPolyData>, 4>> several;
   for (const int method : { relaxed, energy, ed })
   {
     several[method] = { run(4, 1, PartLayers, method), run(3, 7, PartLayers, method),
-      run(4, 1, 65536, method) };
+      run(4, 1, 65536, method), run(paired, 1, PartLayers, method) };
   }
   vtkSmartPointer<vtkPolyData> one; // the paper's method's, last: the checks below compare with it
   for (const int method : { relaxed, energy, ed })
   {
     const std::string name = nameOf(method) + ": ";
     one = run(1, 1, PartLayers, method);
-    const auto& [four, streamed, whole] = several[method];
+    const auto& [four, streamed, whole, pairs] = several[method];
     Check(SamePoints(one, four), name + "1 and 4 threads: the same points (" +
         Str(one->GetNumberOfPoints()) + ", " + Str(four->GetNumberOfPoints()) + ")");
+    Check(SamePoints(one, pairs), name + "1 and " + Str(paired) +
+        " threads (a worker thread beside each part): the same points");
     Check(SamePoints(one, streamed), name + "in 7 slabs: the same points as in one go");
     Check(!SamePoints(one, whole), name + "10 parts sample otherwise than one part");
     const double n = static_cast<double>(one->GetNumberOfPoints());
