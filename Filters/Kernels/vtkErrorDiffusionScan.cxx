@@ -790,66 +790,75 @@ void vtkErrorDiffusionScan::ScanRun(const float* density, unsigned char* mask, v
   float* nxt = this->Next.data();
   Generator random = this->Random;
   float carry = state.Carry;
-  float cachedG = state.CachedG;
-  // The parameters are read from memory (state's) at every voxel: held in
-  // locals, the compiler packs them into vector registers and shuffles each
-  // out at every voxel, which costs more.
-  const LevelParameters& level = state.Level;
-  const float* w = level.Weights;
   vtkIdType count = 0;
-  for (int p = 0; p < n; ++p, idx += d, eidx += ed)
+  for (int p = 0; p < n;)
   {
+    // A stretch of voxels of one density: its parameters, in locals the
+    // compiler keeps in registers through the stretch.
     const float g = density[idx];
-    if (g != cachedG)
+    if (g != state.CachedG)
     {
       state.Level = this->ParametersOf(g);
-      cachedG = g;
+      state.CachedG = g;
     }
-    // g + cur[eidx] (+ the reservoir) is off the critical path.
-    const float value = (g + cur[eidx] + received) + carry;
-    if (Record)
+    const float wu = state.Level.Weights[TARGET_U];
+    const float wbv = state.Level.Weights[TARGET_BACK_V];
+    const float wv = state.Level.Weights[TARGET_V];
+    const float wzbv = state.Level.Weights[TARGET_Z_BACKV];
+    const float wzbu = state.Level.Weights[TARGET_Z_BACKU];
+    const float wz = state.Level.Weights[TARGET_Z];
+    const float base = state.Level.Base;
+    const float modulation = state.Level.Modulation;
+    do
     {
-      cur[eidx] = value - g;
-    }
-    const float threshold = level.Base + level.Modulation * random.Uniform();
-    float e;
-    if (Branchy)
-    {
-      if (value >= threshold)
+      // g + cur[eidx] (+ the reservoir) is off the critical path.
+      const float value = (g + cur[eidx] + received) + carry;
+      if (Record)
       {
-        mask[idx] = 1;
-        ++count;
-        e = value - 1.0f;
-        carry = value * w[TARGET_U] - w[TARGET_U];
+        cur[eidx] = value - g;
+      }
+      const float threshold = base + modulation * random.Uniform();
+      float e;
+      if (Branchy)
+      {
+        if (value >= threshold)
+        {
+          mask[idx] = 1;
+          ++count;
+          e = value - 1.0f;
+          carry = value * wu - wu;
+        }
+        else
+        {
+          mask[idx] = 0;
+          e = value;
+          carry = value * wu;
+        }
       }
       else
       {
-        mask[idx] = 0;
-        e = value;
-        carry = value * w[TARGET_U];
+        // Branch-free: near g = 0.5 a branch on the outcome is mispredicted
+        // half of the time. value * w - b * w: the product does not wait for
+        // the comparison. The same numbers as the branch above.
+        const unsigned char b = value >= threshold ? 1 : 0;
+        mask[idx] = b;
+        count += b;
+        e = value - static_cast<float>(b);
+        const float taken = value >= threshold ? wu : 0.0f;
+        carry = value * wu - taken;
       }
-    }
-    else
-    {
-      // Branch-free: near g = 0.5 a branch on the outcome is mispredicted
-      // half of the time. value * w - b * w: the product does not wait for
-      // the comparison. The same numbers as the branch above.
-      const unsigned char b = value >= threshold ? 1 : 0;
-      mask[idx] = b;
-      count += b;
-      e = value - static_cast<float>(b);
-      const float taken = value >= threshold ? w[TARGET_U] : 0.0f;
-      carry = value * w[TARGET_U] - taken;
-    }
-    cur[eidx - ed + ev] += e * w[TARGET_BACK_V];
-    cur[eidx + ev] += e * w[TARGET_V];
-    nxt[eidx - ev] += e * w[TARGET_Z_BACKV];
-    nxt[eidx - ed] += e * w[TARGET_Z_BACKU];
-    nxt[eidx] += e * w[TARGET_Z];
+      cur[eidx - ed + ev] += e * wbv;
+      cur[eidx + ev] += e * wv;
+      nxt[eidx - ev] += e * wzbv;
+      nxt[eidx - ed] += e * wzbu;
+      nxt[eidx] += e * wz;
+      ++p;
+      idx += d;
+      eidx += ed;
+    } while (p < n && density[idx] == g);
   }
   this->Random = random;
   state.Carry = carry;
-  state.CachedG = cachedG;
   state.Count += count;
 }
 
