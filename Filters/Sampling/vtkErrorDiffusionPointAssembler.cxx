@@ -3,6 +3,7 @@
 #include "vtkErrorDiffusionPointAssembler.h"
 
 #include "vtkArrayDispatch.h"
+#include "vtkBlueNoiseThreads.h"
 #include "vtkCellArray.h"
 #include "vtkDataArrayRange.h"
 #include "vtkDoubleArray.h"
@@ -733,6 +734,33 @@ void HoldRoom(vtkSmartPointer<ArrayT>& array, vtkIdType used, vtkIdType needed, 
   }
   array = grown;
 }
+
+// The pieces for writing `values` values: with `spread` and enough of them, a
+// few a thread (so that uneven pieces even out) for
+// vtkBlueNoiseThreads::Available() threads; else one, as starting threads
+// would cost more than they save.
+vtkIdType PiecesFor(vtkIdType values, bool spread)
+{
+  constexpr vtkIdType valuesToSpread = vtkIdType(1) << 18;
+  return spread && values >= valuesToSpread ? 4 * vtkBlueNoiseThreads::Available() : 1;
+}
+
+// fn(begin, end) over [0, count) in up to `pieces` consecutive pieces, on the
+// threads of vtkBlueNoiseThreads::ForEach when more than one; the pieces must
+// be independent.
+template <typename Fn>
+void ForPieces(vtkIdType count, vtkIdType pieces, Fn&& fn)
+{
+  pieces = std::min(count, pieces);
+  if (pieces <= 1)
+  {
+    fn(vtkIdType(0), count);
+    return;
+  }
+  vtkBlueNoiseThreads::ForEach(static_cast<int>(pieces), [&](int piece) {
+    fn(count * piece / pieces, count * (piece + 1) / pieces);
+  });
+}
 } // anonymous namespace
 
 //------------------------------------------------------------------------------
@@ -811,6 +839,33 @@ void vtkErrorDiffusionPointAssembler::Write(
     }
   }
   this->WriteArrays(samples, first, others ? Arrays::All : Arrays::SideBySide);
+}
+
+//------------------------------------------------------------------------------
+// Layers are independent (each has its own range of points): with threads to
+// spare they are written side by side, a few consecutive layers a task, and
+// the arrays that cannot be written so follow on this thread.
+void vtkErrorDiffusionPointAssembler::WriteHeld(
+  const HeldLayers& held, vtkIdType first, bool spread) const
+{
+  const size_t layers = held.GetNumberOfLayers();
+  std::vector<vtkIdType> firsts(layers + 1, first);
+  for (size_t l = 0; l < layers; ++l)
+  {
+    firsts[l + 1] = firsts[l] + held.GetLayer(l).Count();
+  }
+  const vtkIdType pieces = PiecesFor(held.GetNumberOfPoints(), spread);
+  const bool apart = pieces > 1;
+  ForPieces(static_cast<vtkIdType>(layers), pieces, [&](vtkIdType begin, vtkIdType end) {
+    for (vtkIdType l = begin; l < end; ++l)
+    {
+      this->Write(held.GetLayer(static_cast<size_t>(l)), firsts[l], !apart);
+    }
+  });
+  for (size_t l = 0; apart && this->HasOtherArrays() && l < layers; ++l)
+  {
+    this->WriteOthers(held.GetLayer(l), firsts[l]);
+  }
 }
 
 //------------------------------------------------------------------------------
@@ -1084,8 +1139,13 @@ vtkSmartPointer<vtkCellArray> vtkErrorDiffusionPointAssembler::MakeVertices(vtkI
     ReserveUninitialized(connectivity, n, this->Pool);
     offsets->SetNumberOfTuples(n + 1); // SetNumberOfValues would reallocate a larger array
     connectivity->SetNumberOfTuples(n);
-    std::iota(offsets->GetPointer(0), offsets->GetPointer(0) + n + 1, ValueT(0));
-    std::iota(connectivity->GetPointer(0), connectivity->GetPointer(0) + n, ValueT(0));
+    ValueT* offset = offsets->GetPointer(0);
+    ValueT* point = connectivity->GetPointer(0);
+    offset[n] = static_cast<ValueT>(n);
+    ForPieces(n, PiecesFor(n, true), [offset, point](vtkIdType begin, vtkIdType end) {
+      std::iota(offset + begin, offset + end, static_cast<ValueT>(begin));
+      std::iota(point + begin, point + end, static_cast<ValueT>(begin));
+    });
     Trim(offsets, n + 1); // a recycled array may be larger
     Trim(connectivity, n);
     offsets->Modified();

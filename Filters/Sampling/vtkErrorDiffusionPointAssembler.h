@@ -186,6 +186,13 @@ public:
    */
   void Write(const LayerSamples& samples, vtkIdType first, bool others) const;
   void WriteOthers(const LayerSamples& samples, vtkIdType first) const;
+  /**
+   * Writes every layer `held` has, one after another, as points from `first`
+   * on (room from Grow), as Write with others true does. With `spread`, a
+   * large count of points is written on up to vtkBlueNoiseThreads::Available()
+   * threads: for a caller whose other threads are idle.
+   */
+  void WriteHeld(const HeldLayers& held, vtkIdType first, bool spread) const;
   /// Whether an array is carried that Write leaves to WriteOthers.
   bool HasOtherArrays() const;
 
@@ -203,7 +210,8 @@ public:
 
   /**
    * One vertex cell per point, for n points (32-bit storage when it fits,
-   * to halve the memory). Does not depend on a Begin() or End().
+   * to halve the memory), filled on up to vtkBlueNoiseThreads::Available()
+   * threads. Does not depend on a Begin() or End().
    */
   vtkSmartPointer<vtkCellArray> MakeVertices(vtkIdType n);
 

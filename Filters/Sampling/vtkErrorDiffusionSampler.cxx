@@ -354,9 +354,10 @@ public:
     }
 
     // This part's turn to write (one thread writes to the output at a
-    // time): its held layers after the output's points, and its next ones
-    // straight into the output.
-    void BecomeWriter()
+    // time): its held layers after the output's points (with the threads
+    // when the others are idle: `spread`), and its next ones straight into
+    // the output.
+    void BecomeWriter(bool spread)
     {
       if (this->Direct)
       {
@@ -364,13 +365,7 @@ public:
       }
       this->Direct = true;
       vtkErrorDiffusionPointAssembler& assembler = this->Run->Assembler;
-      vtkIdType first = assembler.Grow(this->Held.GetNumberOfPoints());
-      for (size_t l = 0; l < this->Held.GetNumberOfLayers(); ++l)
-      {
-        const vtkErrorDiffusionPointAssembler::LayerSamples layer = this->Held.GetLayer(l);
-        assembler.Write(layer, first, true);
-        first += layer.Count();
-      }
+      assembler.WriteHeld(this->Held, assembler.Grow(this->Held.GetNumberOfPoints()), spread);
       this->Held.Release(); // a writer holds no more
     }
 
@@ -1408,7 +1403,7 @@ bool vtkErrorDiffusionSampler::vtkInternals::Schedule::ScanChunk(Share& share)
   Part& part = *share.Target;
   if (writer)
   {
-    part.BecomeWriter();
+    part.BecomeWriter(false); // the other threads are scanning
   }
   // Paired, longer chunks: the scan and the layers behind it overlap within
   // a chunk only.
@@ -1454,7 +1449,7 @@ bool vtkErrorDiffusionSampler::vtkInternals::Schedule::TakePair(int layers)
 bool vtkErrorDiffusionSampler::vtkInternals::Schedule::ScanRest(Share& share)
 {
   Part& part = *share.Target;
-  part.BecomeWriter();
+  part.BecomeWriter(true); // the last part left: the other threads are idle
   const int layers = share.Last - share.Next + 1;
   part.Runner.SetThreaded(this->Self->WorkerThreadFor(layers));
   SlabScan stages(
@@ -1496,11 +1491,12 @@ void vtkErrorDiffusionSampler::vtkInternals::Schedule::Finish(Share& share)
   }
   size_t s = static_cast<size_t>(&share - this->Shares.data());
   std::vector<Part*> spares;
+  bool last;
   {
     std::lock_guard<std::mutex> lock(this->Mutex);
     share.Done = true;
     share.Busy = false;
-    --this->Left;
+    last = --this->Left == 0;
     if (ended)
     {
       this->Spares.push_back(&part);
@@ -1521,7 +1517,7 @@ void vtkErrorDiffusionSampler::vtkInternals::Schedule::Finish(Share& share)
   while (s < this->Shares.size())
   {
     Part& done = *this->Shares[s].Target;
-    done.BecomeWriter();
+    done.BecomeWriter(last); // after the last share, the other threads are idle
     std::lock_guard<std::mutex> lock(this->Mutex);
     this->Writer = ++s;
     s = s < this->Shares.size() && this->Shares[s].Done ? s : this->Shares.size();

@@ -1,12 +1,14 @@
 // SPDX-FileCopyrightText: Copyright (c) 2025-2026 the BlueNoiseSampling contributors
 // SPDX-License-Identifier: BSD-3-Clause
 // vtkErrorDiffusionPointAssembler: layers held back (Hold), trimmed at their
-// end (DropLast, across layers) and written later side by side (Write
-// without the other arrays, in any order, then WriteOthers) give the same
-// points and arrays as the same layers added at once (AddLayer, then
-// RemoveLast). Random masks and densities; rows not a multiple of eight
-// voxels; numeric, bit and string arrays. Then a store large enough for the
-// assembler's blocks, held, released and held again.
+// end (DropLast, across layers) and written later, by hand side by side
+// (Write without the other arrays, in any order, then WriteOthers) or by
+// WriteHeld (on this thread, and spread over the threads where the layers
+// hold enough points), give the same points and arrays as the same layers
+// added at once (AddLayer, then RemoveLast). Random masks and densities; rows
+// not a multiple of eight voxels; numeric, bit and string arrays. Then a
+// store large enough for the assembler's blocks, held, released and held
+// again.
 #include "BlueNoiseTestUtilities.h"
 #include "vtkBitArray.h"
 #include "vtkDoubleArray.h"
@@ -27,6 +29,14 @@ using namespace bluenoise_test;
 namespace
 {
 using Assembler = vtkErrorDiffusionPointAssembler;
+
+// How HoldThenWrite writes the held layers.
+enum class Writing
+{
+  ByHand,    // Write side by side in reverse order, then WriteOthers
+  Held,      // WriteHeld on this thread
+  HeldSpread // WriteHeld, on the threads when there are enough points
+};
 
 struct Layers
 {
@@ -104,9 +114,9 @@ vtkSmartPointer<vtkPolyData> AddAtOnce(vtkImageData* image, const Layers& layers
 }
 
 // The first `direct` layers through AddLayer, the others held, `drop`
-// dropped from them, then written in reverse order.
+// dropped from them, then written as `writing` says.
 vtkSmartPointer<vtkPolyData> HoldThenWrite(
-  vtkImageData* image, const Layers& layers, size_t direct, vtkIdType drop)
+  vtkImageData* image, const Layers& layers, size_t direct, vtkIdType drop, Writing writing)
 {
   auto output = vtkSmartPointer<vtkPolyData>::New();
   Assembler assembler;
@@ -128,6 +138,13 @@ vtkSmartPointer<vtkPolyData> HoldThenWrite(
     "held " + Str(held.GetNumberOfPoints()) + " points, not " + Str(expected));
   Check(held.DropLast(drop) == drop, "DropLast dropped fewer than asked");
   const vtkIdType first = assembler.Grow(held.GetNumberOfPoints());
+  if (writing != Writing::ByHand)
+  {
+    assembler.WriteHeld(held, first, writing == Writing::HeldSpread);
+    held.Release();
+    output->SetPoints(assembler.End());
+    return output;
+  }
   std::vector<vtkIdType> starts;
   vtkIdType at = first;
   for (size_t l = 0; l < held.GetNumberOfLayers(); ++l)
@@ -198,10 +215,24 @@ int main()
     {
       for (const size_t direct : { size_t(0), size_t(2) })
       {
-        Compare(AddAtOnce(image, layers, drop), HoldThenWrite(image, layers, direct, drop),
-          "fill " + Str(fill) + ", " + Str(direct) + " layers direct, " + Str(drop) + " dropped");
+        for (const Writing writing : { Writing::ByHand, Writing::Held })
+        {
+          Compare(AddAtOnce(image, layers, drop),
+            HoldThenWrite(image, layers, direct, drop, writing),
+            "fill " + Str(fill) + ", " + Str(direct) + " layers direct, " + Str(drop) +
+              " dropped, writing " + Str(static_cast<int>(writing)));
+        }
       }
     }
+  }
+
+  // Enough held points for WriteHeld to spread them over the threads.
+  {
+    const int side = 512, layersHeld = 4;
+    auto large = MakeImage(side, side - 3, layersHeld + 1, random);
+    const Layers layers = MakeLayers(side, side - 3, layersHeld + 1, 0.5, random);
+    Compare(AddAtOnce(large, layers, 5), HoldThenWrite(large, layers, 1, 5, Writing::HeldSpread),
+      "large, spread over the threads");
   }
 
   // A store in blocks (tens of MB), released and held again; Clear keeps it.
