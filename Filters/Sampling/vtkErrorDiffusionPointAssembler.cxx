@@ -735,14 +735,19 @@ void HoldRoom(vtkSmartPointer<ArrayT>& array, vtkIdType used, vtkIdType needed, 
   array = grown;
 }
 
-// The pieces for writing `values` values: with `spread` and enough of them, a
-// few a thread (so that uneven pieces even out) for
-// vtkBlueNoiseThreads::Available() threads; else one, as starting threads
-// would cost more than they save.
+// The pieces for writing `values` values: with `spread`, enough of them and
+// more than one of vtkBlueNoiseThreads::Available() threads, a few a thread
+// (so that uneven pieces even out); else one, as starting threads would cost
+// more than they save.
 vtkIdType PiecesFor(vtkIdType values, bool spread)
 {
   constexpr vtkIdType valuesToSpread = vtkIdType(1) << 18;
-  return spread && values >= valuesToSpread ? 4 * vtkBlueNoiseThreads::Available() : 1;
+  if (!spread || values < valuesToSpread)
+  {
+    return 1;
+  }
+  const int threads = vtkBlueNoiseThreads::Available();
+  return threads > 1 ? 4 * threads : 1;
 }
 
 // fn(begin, end) over [0, count) in up to `pieces` consecutive pieces, on the
