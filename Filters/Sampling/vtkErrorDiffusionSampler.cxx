@@ -295,6 +295,14 @@ public:
       this->FlushFrom(pass + 1);
     }
 
+    // Its kernel's warm-up: the `layers` of settling (WarmUpLayers) that its
+    // overlap layers do not give already. The overlap settles the pattern on
+    // the volume's own layers, so that a part does not scan both.
+    int WarmUp(int layers) const
+    {
+      return std::max(0, layers - (this->First - this->ScanFirst));
+    }
+
     // The first layer the relaxation sees: the overlap layers its search reaches.
     int RelaxFirst() const
     {
@@ -302,10 +310,11 @@ public:
     }
 
     // Before its first chunk: the kernel a copy of the run's first kernel as
-    // it began (its settings and charge curves), and the relaxation begun.
-    // With the buffers of `ended` (a part done with its chunks, or null): its
-    // memory is in place, where fresh pages would cost a fault each.
-    void Start(const vtkErrorDiffusionKernel& begun, std::uint64_t seed, Part* ended)
+    // it began (its settings and charge curves) but its own warm-up (see
+    // WarmUp), and the relaxation begun. With the buffers of `ended` (a part
+    // done with its chunks, or null): its memory is in place, where fresh
+    // pages would cost a fault each.
+    void Start(const vtkErrorDiffusionKernel& begun, std::uint64_t seed, int warmUp, Part* ended)
     {
       vtkInternals& run = *this->Run;
       this->Kernel = begun;
@@ -313,6 +322,7 @@ public:
       {
         this->TakeBuffers(*ended);
       }
+      this->Kernel.SetWarmUpLayers(this->WarmUp(warmUp));
       this->Kernel.Begin(run.NX(), run.NY(), this->ScanFirst);
       this->StartRelaxation(seed);
       this->Held.SetRoom((this->Last - this->First + 1) * run.LayerSize()); // a point a voxel
@@ -901,7 +911,7 @@ bool vtkErrorDiffusionSampler::StartRun(vtkInformation*, vtkInformationVector**)
   kernel.SetMethod(this->Method == METHOD_WHITE_NOISE
       ? vtkErrorDiffusionKernel::METHOD_WHITE_NOISE
       : vtkErrorDiffusionKernel::METHOD_ERROR_DIFFUSION);
-  kernel.SetWarmUpLayers(this->WarmUpLayers);
+  kernel.SetWarmUpLayers(run.First().WarmUp(this->WarmUpLayers));
   kernel.Begin(run.NX(), run.NY(), run.ScanFirst);
   if (run.Parts.size() > 1)
   {
@@ -1382,7 +1392,8 @@ vtkErrorDiffusionSampler::vtkInternals::Schedule::Take()
   }
   if (!share->Target->Started)
   {
-    share->Target->Start(this->Run.Begun, static_cast<std::uint64_t>(this->Self->Seed), spare);
+    share->Target->Start(
+      this->Run.Begun, static_cast<std::uint64_t>(this->Self->Seed), this->Self->WarmUpLayers, spare);
   }
   else if (spare)
   {

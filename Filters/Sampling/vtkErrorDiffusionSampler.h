@@ -330,7 +330,10 @@ public:
    * Virtual layers (rounded up to whole scanning cycles of 4) scanned with the
    * first layer's densities before it, so that the first layers are sampled
    * from a settled error pattern (see vtkErrorDiffusionKernel::WarmUp). They
-   * add no points and no error. In [0, 4096]. Default 8.
+   * add no points and no error. A piece or z-part that scans overlap layers
+   * first (OverlapLayers) is warmed up only for the layers its overlap is
+   * short of: the overlap settles the pattern on the volume's own layers. In
+   * [0, 4096]. Default 8.
    */
   vtkSetClampMacro(WarmUpLayers, int, 0, 4096);
   vtkGetMacro(WarmUpLayers, int);
@@ -403,8 +406,9 @@ public:
    * PartLayers): layers before it scanned first to settle the error pattern
    * it enters with. In [0, 4096]. Default 8: the relaxation's largest search
    * radius (vtkBlueNoiseRelaxation::MaximumRadius), so that its context
-   * below a part is whole; the warm-up settles the pattern of the first
-   * overlap layer, and longer overlaps leave the seams as they are.
+   * below a part is whole. The overlap stands in for the warm-up
+   * (WarmUpLayers), which makes up only what it is short of; longer overlaps
+   * leave the seams as they are.
    */
   vtkSetClampMacro(OverlapLayers, int, 0, 4096);
   vtkGetMacro(OverlapLayers, int);

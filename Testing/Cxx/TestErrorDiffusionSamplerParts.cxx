@@ -252,6 +252,36 @@ int main()
         " ones) and the points are those without a mask");
   }
 
+  // A part scans its overlap in place of a warm-up, which makes up only what
+  // the overlap is short of: with the overlap (8) as long as the warm-up,
+  // WarmUpLayers changes the first part's points alone; with a shorter one,
+  // the other parts' too.
+  {
+    // The points of layers below the first seam (0) or from it on (1).
+    const auto warmed = [&](int warmUp, int overlap, int side) {
+      auto sampler = inParts();
+      sampler->SetWarmUpLayers(warmUp);
+      sampler->SetOverlapLayers(overlap);
+      sampler->Update();
+      std::vector<double> coordinates;
+      vtkPolyData* points = sampler->GetOutput();
+      for (vtkIdType p = 0; p < points->GetNumberOfPoints(); ++p)
+      {
+        const double* x = points->GetPoint(p);
+        if ((std::lround(x[2]) >= PartLayers) == (side == 1))
+        {
+          coordinates.insert(coordinates.end(), x, x + 3);
+        }
+      }
+      return coordinates;
+    };
+    Check(warmed(8, 8, 0) != warmed(4, 8, 0), "the warm-up changes the first part's points");
+    Check(warmed(8, 8, 1) == warmed(4, 8, 1),
+      "an overlap as long as the warm-up: the other parts' points do not depend on it");
+    Check(warmed(8, 2, 1) != warmed(4, 2, 1),
+      "an overlap shorter than the warm-up: the other parts' points depend on it");
+  }
+
   // The attributes in parts: a numeric and a string array carried from the
   // voxels, each naming the point's layer.
   {
