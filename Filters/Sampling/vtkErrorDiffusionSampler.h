@@ -423,9 +423,12 @@ public:
    * than two parts is sampled in one. The parts depend on the volume alone,
    * never on the threads, so the output does not either; but it does depend
    * on these two. Each part but the first scans OverlapLayers layers before
-   * its own first, as a piece does (see the class comment). Where the
-   * density sits in a few parts (a ball in an empty box), smaller parts keep
-   * more threads busy, each scanning its overlap again.
+   * its own first, as a piece does (see the class comment), so shorter
+   * parts rescan more: they pay only where they give threads parts that
+   * would have none (a volume of 512 layers has 8 parts by default, 16 of
+   * 32 layers, each rescanning a quarter of its layers again). Where the
+   * density sits in a few parts (a ball in an empty box), shorter ones
+   * also keep more threads busy.
    */
   vtkSetClampMacro(PartLayers, int, 2, 65536);
   vtkGetMacro(PartLayers, int);

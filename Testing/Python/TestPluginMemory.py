@@ -49,7 +49,7 @@ def run_parts():
     peak_before = resident_bytes("VmHWM:")
     sampler.UpdatePipeline()
     growth = resident_bytes("VmHWM:") - max(before, peak_before)
-    parts = layers // sampler.PartLayers
+    parts = min(layers // sampler.PartLayers, n * n * layers // sampler.PartVoxels)
     per_part = 90.0 * n * n
     limit = parts * per_part / 2
     check(growth <= limit,
