@@ -56,6 +56,16 @@ struct GatherWorker
     const auto in = vtk::DataArrayValueRange(src);
     auto out = vtk::DataArrayValueRange(dst);
     const int nc = src->GetNumberOfComponents();
+    if (nc == 1) // scalars, the common case: a plain gather, no product per point
+    {
+      const auto from = in.begin() + srcFirst;
+      auto to = out.begin() + dstFirst;
+      for (vtkIdType p = 0; p < n; ++p)
+      {
+        to[p] = from[ids[p]];
+      }
+      return;
+    }
     for (vtkIdType p = 0; p < n; ++p)
     {
       const vtkIdType from = (srcFirst + ids[p]) * nc;
