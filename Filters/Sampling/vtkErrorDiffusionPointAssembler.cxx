@@ -47,6 +47,16 @@ bool WritableSideBySide(vtkAbstractArray* source, vtkAbstractArray* target)
 
 // dst[dstFirst + p] = src[srcFirst + ids[p]] for p in [0, n), value by value
 // (a tuple assignment copies with a memcpy call per tuple).
+// to[p] = from[ids[p]], p < n: the gather of one-component values by in-layer ids.
+template <typename FromT, typename ToT>
+void GatherByIds(FromT from, const vtkIdType* ids, vtkIdType n, ToT to)
+{
+  for (vtkIdType p = 0; p < n; ++p)
+  {
+    to[p] = from[ids[p]];
+  }
+}
+
 struct GatherWorker
 {
   template <typename SrcT, typename DstT>
@@ -58,12 +68,7 @@ struct GatherWorker
     const int nc = src->GetNumberOfComponents();
     if (nc == 1) // scalars, the common case: a plain gather, no product per point
     {
-      const auto from = in.begin() + srcFirst;
-      auto to = out.begin() + dstFirst;
-      for (vtkIdType p = 0; p < n; ++p)
-      {
-        to[p] = from[ids[p]];
-      }
+      GatherByIds(in.begin() + srcFirst, ids, n, out.begin() + dstFirst);
       return;
     }
     for (vtkIdType p = 0; p < n; ++p)
@@ -799,11 +804,7 @@ void vtkErrorDiffusionPointAssembler::Hold(
     held.RowEnds.resize(firstRow);
     return;
   }
-  float* densities = held.Densities->GetPointer(first);
-  for (vtkIdType p = 0; p < n; ++p)
-  {
-    densities[p] = density[ids[p]];
-  }
+  GatherByIds(density, ids, n, held.Densities->GetPointer(first));
   held.Layers.push_back({ z, first, firstRow });
   held.Total = first + n;
   held.Peak = std::max(held.Peak, held.Total + 1);
@@ -848,10 +849,7 @@ void vtkErrorDiffusionPointAssembler::Write(
   }
   else
   {
-    for (vtkIdType p = 0; p < n; ++p)
-    {
-      densities[p] = samples.LayerDensity[samples.Ids[p]];
-    }
+    GatherByIds(samples.LayerDensity, samples.Ids, n, densities);
   }
   this->WriteArrays(samples, first, others ? Arrays::All : Arrays::SideBySide);
 }
